@@ -1,0 +1,65 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Lattice_mesher_3 developers
+
+#ifndef CGAL_LATTICE_MESHER_TRAITS_3_H
+#define CGAL_LATTICE_MESHER_TRAITS_3_H
+
+#include <CGAL/number_utils.h>
+#include <Eigen/Dense>
+
+namespace CGAL {
+
+/*!
+\ingroup PkgLatticeMesher3Ref
+
+The default model of `LatticeMesherTraits_3`: the kernel `K` plus the dense matrix and
+vector types in which frames and isotropic-space vectors are expressed, and the
+conversions between kernel and matrix types that every stage uses.
+
+\tparam K a CGAL kernel with `double`-convertible coordinates, e.g. `Epick`.
+*/
+template <typename K>
+class Lattice_mesher_traits_3 : public K
+{
+public:
+  typedef K                                Kernel;
+  typedef typename K::FT                   FT;
+  typedef typename K::Point_3              Point_3;
+  typedef typename K::Vector_3             Vector_3;
+  /// 3x3 frame: its columns are the lattice cube edges t1, t2, t3.
+  typedef Eigen::Matrix<double, 3, 3>      Matrix_3;
+  /// Dense 3-vector used in the hot loops.
+  typedef Eigen::Matrix<double, 3, 1>      Vector_d3;
+
+  Lattice_mesher_traits_3(const K& k = K()) : K(k) {}
+
+  struct To_vector_d3
+  {
+    Vector_d3 operator()(const Point_3& p) const
+    { return Vector_d3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); }
+    Vector_d3 operator()(const Vector_3& v) const
+    { return Vector_d3(CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z())); }
+  };
+  struct To_point_3
+  {
+    Point_3 operator()(const Vector_d3& v) const { return Point_3(v[0], v[1], v[2]); }
+  };
+  struct To_vector_3
+  {
+    Vector_3 operator()(const Vector_d3& v) const { return Vector_3(v[0], v[1], v[2]); }
+  };
+
+  To_vector_d3 to_vector_d3_object() const { return To_vector_d3(); }
+  To_point_3 to_point_3_object() const { return To_point_3(); }
+  To_vector_3 to_vector_3_object() const { return To_vector_3(); }
+};
+
+} // namespace CGAL
+
+#endif // CGAL_LATTICE_MESHER_TRAITS_3_H
