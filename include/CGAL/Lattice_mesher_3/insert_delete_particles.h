@@ -1,0 +1,233 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Lattice_mesher_3 developers
+
+#ifndef CGAL_LATTICE_MESHER_3_INSERT_DELETE_PARTICLES_H
+#define CGAL_LATTICE_MESHER_3_INSERT_DELETE_PARTICLES_H
+
+#include <CGAL/Lattice_mesher_3/Gaussian_hole_kernel_3.h>
+#include <CGAL/Lattice_mesher_3/Lattice_3.h>
+#include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
+#include <CGAL/Lattice_mesher_3/frame_fields.h>
+#include <CGAL/Lattice_mesher_3/optimize_particles.h>
+#include <CGAL/Lattice_mesher_3/internal/particle_neighbors.h>
+
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Lattice_mesher_3 {
+
+/*!
+\ingroup PkgLatticeMesher3InsertionDeletion
+
+Mesh-free particle deletion (Alg. 2): with D the ascending isotropic distances from a particle
+to its neighbours and l_c = l_closest, the particle is deleted if D[0] < 0.5 l_c, or the mean of
+D[0..1] < 0.75 l_c, of D[0..3] < 0.85 l_c, of D[0..5] < 0.9 l_c, or of D[0..7] < 0.95 l_c.
+Decisions are sequential against the particles that remain, so of a too-close pair only one goes;
+the least constrained go first (free, then boundary, then sharp-edge); fixed particles stay.
+Distances beyond the search radius count as that radius. Returns the number deleted.
+*/
+template <typename Domain, typename FrameField, typename Point_3>
+std::size_t delete_particles(Particle_set_3<Point_3>& ps, const Domain& /*domain*/, const FrameField& field,
+                             const Lattice_3& lattice, const Optimization_options& o)
+{
+  typedef typename Domain::Geom_traits K;
+  using internal::Vec3;
+  const std::size_t n = ps.size();
+  if(n < 2) return 0;
+  const double lc = lattice.closest_distance * o.edge_length;
+  const double radius = o.neighbor_radius * o.edge_length;
+  const std::vector<Vec3> x = internal::to_vectors(ps.points);
+  const internal::Particle_frames frames = internal::compute_particle_frames<K>(x, field, o.threads);
+  const internal::Neighbor_graph graph = internal::build_neighbor_graph<K>(x, frames, field, radius, o.threads);
+
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return ps.kinds[a] > ps.kinds[b]; });
+
+  static const int counts[5] = { 1, 2, 4, 6, 8 };
+  static const double factors[5] = { 0.5, 0.75, 0.85, 0.9, 0.95 };
+  std::vector<char> alive(n, 1);
+  std::vector<double> d;
+  std::size_t deleted = 0;
+  for(std::size_t i : order) {
+    if(ps.kinds[i] == Particle_kind::FIXED) continue;
+    d.clear();
+    for(int e = graph.offsets[i]; e < graph.offsets[i + 1]; ++e) {
+      const int j = graph.neighbor[e];
+      if(alive[j]) d.push_back((graph.pair_map[graph.pair_of[e]] * (x[i] - x[j])).norm());
+    }
+    if(d.size() < 8) d.resize(8, radius);
+    std::partial_sort(d.begin(), d.begin() + 8, d.end());
+    double sum = 0.;
+    int k = 0;
+    for(int r = 0; r < 5; ++r) {
+      for(; k < counts[r]; ++k) sum += d[k];
+      if(sum / counts[r] < factors[r] * lc) { alive[i] = 0; ++deleted; break; }
+    }
+  }
+  if(deleted > 0) {
+    Particle_set_3<Point_3> kept;
+    for(std::size_t i = 0; i < n; ++i)
+      if(alive[i]) kept.push_back(ps.points[i], ps.kinds[i], ps.feature[i]);
+    ps = std::move(kept);
+  }
+  return deleted;
+}
+
+namespace internal {
+
+// Candidates p_i + T(p_i) l O_k for the given offsets O_k (unit cube), projected on the boundary
+// when outside, minus those within 0.1 l of a particle or of an earlier candidate; accepted in
+// ascending GHK energy while no particle (accepted ones included) is closer than min_distance.
+template <typename Domain, typename FrameField, typename Point_3>
+std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
+                              const Lattice_3& lattice, const std::vector<Eigen::Vector3d>& offsets,
+                              double min_distance, const Optimization_options& o)
+{
+  typedef typename Domain::Geom_traits K;
+  using internal::Vec3;
+  using internal::Mat3;
+  const std::size_t n = ps.size();
+  if(n == 0) return 0;
+  const double l = o.edge_length;
+  const double coincidence = 0.1 * l;
+  const double snap = o.boundary_distance * l;
+  const bool has_features = domain.number_of_curves() > 0;
+  const Gaussian_hole_kernel_3 kernel(lattice);
+
+  const std::vector<Vec3> x = internal::to_vectors(ps.points);
+  const internal::Particle_frames frames = internal::compute_particle_frames<K>(x, field, o.threads);
+  const internal::Point_search_3<K> search(ps.points);
+  const double reach = 1.1 * frames.max_stretch;   // Euclidean radius per unit isotropic radius
+
+  struct Candidate { Point_3 p; Particle_kind kind; int feature; double energy; Mat3 B; bool keep; };
+  const std::size_t m = offsets.size();
+  std::vector<Candidate> cand(n * m);
+  bool failed = false;
+  std::string what;
+#pragma omp parallel num_threads(o.threads)
+  {
+    std::vector<std::size_t> near;
+#pragma omp for schedule(dynamic, 64)
+    for(std::ptrdiff_t c = 0; c < std::ptrdiff_t(n * m); ++c) {
+      Candidate& cd = cand[c];
+      cd.keep = false;
+      try {
+        const std::size_t i = std::size_t(c) / m, k = std::size_t(c) % m;
+        Vec3 q = x[i] + l * (frames.T[i] * offsets[k]);
+        Point_3 p(q[0], q[1], q[2]);
+        cd.kind = Particle_kind::FREE;
+        cd.feature = -1;
+        if(!domain.is_inside(p)) {
+          p = domain.project_on_surface(p).point;
+          cd.kind = Particle_kind::BOUNDARY;
+          if(has_features) {
+            const auto f = domain.project_on_features(p);
+            const Mat3 Bp = internal::isotropic_map(field.frame(p), p);
+            if(f.index >= 0 && (Bp * (internal::to_vector(p) - internal::to_vector(f.point))).norm() <= snap) {
+              p = f.point;
+              cd.kind = Particle_kind::SHARP_EDGE;
+              cd.feature = f.index;
+            }
+          }
+          q = internal::to_vector(p);
+        }
+        cd.p = p;
+        cd.B = internal::isotropic_map(field.frame(p), p);
+        // a candidate that can never be accepted is dropped before its energy is computed
+        near.clear();
+        search.in_sphere(p, reach * (std::max)(min_distance, kernel.support_radius() * l), near);
+        double e = 0.;
+        bool blocked = false;
+        for(std::size_t j : near) {
+          const Vec3 v = cd.B * (q - x[j]);
+          if(v.norm() < (std::max)(min_distance, coincidence)) { blocked = true; break; }
+          e += kernel.energy(v / l);
+        }
+        cd.energy = e;
+        cd.keep = !blocked;
+      } catch(const std::exception& ex) {
+#pragma omp critical(lattice_mesher_3_insert)
+        { if(!failed) { failed = true; what = ex.what(); } }
+      }
+    }
+  }
+  if(failed) throw std::domain_error(what);
+
+  // Coincident candidates: keep the first of each 0.1 l* cluster (deterministic order).
+  internal::Hash_grid_3 seen(coincidence * reach);
+  std::vector<std::size_t> order;
+  for(std::size_t c = 0; c < cand.size(); ++c) {
+    if(!cand[c].keep) continue;
+    const Vec3 q = internal::to_vector(cand[c].p);
+    bool dup = false;
+    seen.for_each_near(q, [&](const Vec3& r, int) { if((cand[c].B * (q - r)).norm() < coincidence) dup = true; });
+    if(dup) continue;
+    seen.insert(q, int(c));
+    order.push_back(c);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cand[a].energy < cand[b].energy; });
+
+  internal::Hash_grid_3 accepted(min_distance * reach);
+  std::size_t inserted = 0;
+  for(std::size_t c : order) {
+    const Vec3 q = internal::to_vector(cand[c].p);
+    bool blocked = false;
+    accepted.for_each_near(q, [&](const Vec3& r, int) { if((cand[c].B * (q - r)).norm() < min_distance) blocked = true; });
+    if(blocked) continue;
+    accepted.insert(q, int(c));
+    ps.push_back(cand[c].p, cand[c].kind, cand[c].feature);
+    ++inserted;
+  }
+  return inserted;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgLatticeMesher3InsertionDeletion
+
+Mesh-free particle insertion (Alg. 2): the candidates are the one-ring positions
+p_i + T(p_i) l* O_k of every particle; a candidate outside the domain is projected on the
+boundary (and on a sharp edge if it lands within `boundary_distance` x l* of one). Candidates
+within 0.1 l* of a particle or of an earlier candidate are dropped, the rest are sorted by the
+GHK energy a particle would have there, and accepted greedily when their nearest particle,
+accepted candidates included, is at least 0.75 l_closest away (all distances isotropic).
+Returns the number inserted.
+*/
+template <typename Domain, typename FrameField, typename Point_3>
+std::size_t insert_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
+                             const Lattice_3& lattice, const Optimization_options& o)
+{
+  return internal::insert_candidates(ps, domain, field, lattice, lattice.one_ring,
+                                     0.75 * lattice.closest_distance * o.edge_length, o);
+}
+
+/*!
+\ingroup PkgLatticeMesher3InsertionDeletion
+
+Coarse-to-fine refinement: adds p + T(p) l* (+-t_m) for every particle and frame axis m, where
+l* = `o.edge_length` is the new (finer) edge length, dropping candidates that coincide (within
+0.1 l*) with a particle or an earlier candidate. Returns the number added.
+*/
+template <typename Domain, typename FrameField, typename Point_3>
+std::size_t refine_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
+                             const Lattice_3& lattice, const Optimization_options& o)
+{
+  std::vector<Eigen::Vector3d> axes;
+  internal::add_axis_offsets(axes);
+  return internal::insert_candidates(ps, domain, field, lattice, axes, 0.1 * o.edge_length, o);
+}
+
+} // namespace Lattice_mesher_3
+} // namespace CGAL
+
+#endif // CGAL_LATTICE_MESHER_3_INSERT_DELETE_PARTICLES_H

@@ -1,0 +1,220 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Lattice_mesher_3 developers
+
+#ifndef CGAL_LATTICE_MESHER_3_INTERNAL_PARTICLE_NEIGHBORS_H
+#define CGAL_LATTICE_MESHER_3_INTERNAL_PARTICLE_NEIGHBORS_H
+
+#include <CGAL/Lattice_mesher_3/frame_fields.h>
+
+#include <CGAL/Fuzzy_sphere.h>
+#include <CGAL/Kd_tree.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/property_map.h>
+
+#include <boost/iterator/counting_iterator.hpp>
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Lattice_mesher_3 {
+namespace internal {
+
+typedef Eigen::Vector3d Vec3;
+typedef Eigen::Matrix3d Mat3;
+
+// k-d tree over a fixed array of points, answering queries by index.
+template <typename K>
+class Point_search_3
+{
+  typedef typename K::Point_3 Point_3;
+  typedef typename CGAL::Pointer_property_map<Point_3>::const_type Point_map;
+  typedef CGAL::Search_traits_3<K> Base_traits;
+  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Base_traits> Traits;
+  typedef CGAL::Kd_tree<Traits> Tree;
+  typedef CGAL::Fuzzy_sphere<Traits> Sphere;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Knn;
+
+public:
+  explicit Point_search_3(const std::vector<Point_3>& points)
+    : points_(points),
+      tree_(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(points.size()),
+            typename Tree::Splitter(), Traits(Point_map(points_.data())))
+  {
+    tree_.build();   // before any concurrent query
+  }
+
+  /// appends the indices of the points within Euclidean distance `radius` of `c`
+  void in_sphere(const Point_3& c, double radius, std::vector<std::size_t>& out) const
+  {
+    if(points_.empty()) return;
+    tree_.search(std::back_inserter(out), Sphere(c, radius, 0., tree_.traits()));
+  }
+
+  /// index of the nearest point, and its squared distance
+  std::pair<std::size_t, double> nearest(const Point_3& c) const
+  {
+    Knn search(tree_, c, 1, 0., true, typename Knn::Distance(tree_.traits().point_property_map()));
+    return { search.begin()->first, search.begin()->second };
+  }
+
+  std::size_t size() const { return points_.size(); }
+
+private:
+  std::vector<Point_3> points_;
+  Tree tree_;
+};
+
+// Frames of the particles: T_i, B_i = T_i^-1, and the largest stretch of any T_i.
+struct Particle_frames
+{
+  std::vector<Mat3> T, B;
+  double max_stretch = 1.;
+};
+
+template <typename K, typename FrameField>
+Particle_frames compute_particle_frames(const std::vector<Vec3>& x, const FrameField& field, int threads)
+{
+  typedef typename K::Point_3 Point_3;
+  Particle_frames f;
+  const std::ptrdiff_t n = std::ptrdiff_t(x.size());
+  f.T.resize(n);
+  f.B.resize(n);
+  std::vector<double> stretch(n, 0.);
+  bool failed = false;
+  std::string what;
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for(std::ptrdiff_t i = 0; i < n; ++i) {
+    try {
+      const Point_3 p(x[i][0], x[i][1], x[i][2]);
+      f.T[i] = field.frame(p);
+      f.B[i] = isotropic_map(f.T[i], p);
+      stretch[i] = max_stretch(f.T[i]);
+    } catch(const std::exception& e) {
+#pragma omp critical(lattice_mesher_3_frames)
+      { if(!failed) { failed = true; what = e.what(); } }
+    }
+  }
+  if(failed) throw std::domain_error(what);
+  if(n > 0) f.max_stretch = *std::max_element(stretch.begin(), stretch.end());
+  return f;
+}
+
+// The neighbours of every particle within an isotropic radius, as a symmetric CSR graph, and
+// its half as a list of pairs (i < j) with the isotropic map B of the pair's midpoint. B is
+// frozen when the graph is built: the energy of an optimization round is then a smooth function
+// of the positions, with the exact gradient that the line search needs.
+struct Neighbor_graph
+{
+  // CSR: neighbours of i are entries [offsets[i], offsets[i+1]); entry e is particle
+  // neighbor[e], through pair pair_of[e] (sign +1 if i is the pair's first particle).
+  std::vector<int> offsets, neighbor, pair_of;
+  std::vector<std::array<int, 2> > pairs;
+  std::vector<Mat3> pair_map;
+
+  std::size_t number_of_particles() const { return offsets.empty() ? 0 : offsets.size() - 1; }
+};
+
+template <typename K, typename FrameField>
+Neighbor_graph build_neighbor_graph(const std::vector<Vec3>& x, const Particle_frames& frames,
+                                    const FrameField& field, double iso_radius, int threads)
+{
+  typedef typename K::Point_3 Point_3;
+  const std::size_t n = x.size();
+  std::vector<Point_3> pts(n);
+  for(std::size_t i = 0; i < n; ++i) pts[i] = Point_3(x[i][0], x[i][1], x[i][2]);
+  const Point_search_3<K> search(pts);
+
+  // Euclidean radius covering iso_radius under the largest stretch (x1.1 for midpoints whose
+  // frame stretches more than any particle's); then filtered by |B_ij v| <= iso_radius.
+  const double query_radius = 1.1 * frames.max_stretch * iso_radius;
+  std::vector<std::vector<std::pair<int, Mat3> > > upper(n);   // j > i
+  bool failed = false;
+  std::string what;
+#pragma omp parallel num_threads(threads)
+  {
+    std::vector<std::size_t> found;
+#pragma omp for schedule(dynamic, 256)
+    for(std::ptrdiff_t ii = 0; ii < std::ptrdiff_t(n); ++ii) {
+      const std::size_t i = std::size_t(ii);
+      found.clear();
+      search.in_sphere(pts[i], query_radius, found);
+      std::sort(found.begin(), found.end());
+      try {
+        for(std::size_t j : found) {
+          if(j <= i) continue;
+          const Vec3 v = x[i] - x[j];
+          const Point_3 m(0.5 * (x[i][0] + x[j][0]), 0.5 * (x[i][1] + x[j][1]), 0.5 * (x[i][2] + x[j][2]));
+          const Mat3 b = isotropic_map(field.frame(m), m);
+          if((b * v).squaredNorm() <= iso_radius * iso_radius)
+            upper[i].emplace_back(int(j), b);
+        }
+      } catch(const std::exception& e) {
+#pragma omp critical(lattice_mesher_3_neighbors)
+        { if(!failed) { failed = true; what = e.what(); } }
+      }
+    }
+  }
+  if(failed) throw std::domain_error(what);
+
+  Neighbor_graph g;
+  std::vector<int> degree(n, 0);
+  for(std::size_t i = 0; i < n; ++i)
+    for(const auto& e : upper[i]) { ++degree[i]; ++degree[e.first]; g.pairs.push_back({int(i), e.first}); g.pair_map.push_back(e.second); }
+  g.offsets.assign(n + 1, 0);
+  for(std::size_t i = 0; i < n; ++i) g.offsets[i + 1] = g.offsets[i] + degree[i];
+  g.neighbor.resize(g.offsets[n]);
+  g.pair_of.resize(g.offsets[n]);
+  std::vector<int> fill(g.offsets.begin(), g.offsets.end() - 1);
+  for(std::size_t p = 0; p < g.pairs.size(); ++p) {
+    const int i = g.pairs[p][0], j = g.pairs[p][1];
+    g.neighbor[fill[i]] = j; g.pair_of[fill[i]++] = int(p);
+    g.neighbor[fill[j]] = i; g.pair_of[fill[j]++] = int(p);
+  }
+  return g;
+}
+
+// Uniform hash grid for a growing point set (the insertion's accepted candidates), where a
+// k-d tree would have to be rebuilt after every insertion.
+class Hash_grid_3
+{
+public:
+  explicit Hash_grid_3(double cell) : cell_(cell) {}
+  void insert(const Vec3& p, int id) { cells_[key(cell_of(p))].push_back({p, id}); }
+  // calls f(point, id) for every stored point within the 27 cells around p
+  template <typename F> void for_each_near(const Vec3& p, F f) const
+  {
+    const std::array<long, 3> c = cell_of(p);
+    for(long dx = -1; dx <= 1; ++dx) for(long dy = -1; dy <= 1; ++dy) for(long dz = -1; dz <= 1; ++dz) {
+      auto it = cells_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
+      if(it == cells_.end()) continue;
+      for(const auto& e : it->second) f(e.first, e.second);
+    }
+  }
+
+private:
+  std::array<long, 3> cell_of(const Vec3& p) const
+  { return { long(std::floor(p[0] / cell_)), long(std::floor(p[1] / cell_)), long(std::floor(p[2] / cell_)) }; }
+  static long long key(const std::array<long, 3>& c)
+  { return (static_cast<long long>(c[0]) * 73856093LL) ^ (static_cast<long long>(c[1]) * 19349663LL) ^ (static_cast<long long>(c[2]) * 83492791LL); }
+  double cell_;
+  std::unordered_map<long long, std::vector<std::pair<Vec3, int> > > cells_;
+};
+
+} // namespace internal
+} // namespace Lattice_mesher_3
+} // namespace CGAL
+
+#endif // CGAL_LATTICE_MESHER_3_INTERNAL_PARTICLE_NEIGHBORS_H

@@ -1,0 +1,488 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Lattice_mesher_3 developers
+
+#ifndef CGAL_LATTICE_MESHER_3_MESH_QUALITY_H
+#define CGAL_LATTICE_MESHER_3_MESH_QUALITY_H
+
+#include <CGAL/Lattice_mesher_3/Lattice_3.h>
+#include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
+#include <CGAL/Lattice_mesher_3/frame_fields.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Kernel_traits.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <exception>
+#include <initializer_list>
+#include <iomanip>
+#include <iterator>
+#include <ostream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Lattice_mesher_3 {
+
+/*!
+\ingroup PkgLatticeMesher3Quality
+Summary of one quality figure over a mesh. `std` is the population standard deviation.
+Only the fields meaningful for a figure are reported in the JSON output (e.g. no `min` for
+the largest dihedral angle).
+*/
+struct Quality_statistics
+{
+  double min = 0.;
+  double max = 0.;
+  double mean = 0.;
+  double std = 0.;
+};
+
+/*!
+\ingroup PkgLatticeMesher3Quality
+Quality of one tetrahedron, measured in the isotropic space. Angles are in degrees.
+*/
+struct Tetrahedron_quality_3
+{
+  double theta_min = 0.;  ///< smallest dihedral angle (70.53 for a regular tetrahedron)
+  double theta_max = 0.;  ///< largest dihedral angle
+  double rho = 0.;        ///< edge-radius ratio sqrt(6) e_min / (4 r_circ), 1 when regular
+  double kappa = 0.;      ///< 3 sqrt(6) V / (2 l_rms A_rms), 1 when regular
+};
+
+/*!
+\ingroup PkgLatticeMesher3Quality
+The figures of the paper's quality tables, measured in the isotropic space of a frame field
+(see `compute_mesh_quality()`). Angles are in degrees. `hausdorff` is negative when it was not
+measured; `seconds` is filled by the caller.
+*/
+struct Mesh_quality_3
+{
+  std::size_t vertices = 0;
+  std::size_t tets = 0;
+  Quality_statistics theta_min;  ///< of the per-tetrahedron smallest dihedral angle
+  Quality_statistics theta_max;  ///< of the per-tetrahedron largest dihedral angle
+  Quality_statistics rho;
+  Quality_statistics kappa;
+  Quality_statistics epsilon;    ///< edge alignment error, over the unique edges
+  std::size_t below20 = 0;       ///< tetrahedra with theta_min < 20 degrees
+  std::size_t below40 = 0;       ///< tetrahedra with theta_min < 40 degrees
+  double hausdorff = -1.;
+  struct Timings
+  {
+    double optimize = 0.;
+    double mesh = 0.;
+    double total = 0.;
+  } seconds;
+};
+
+namespace internal {
+
+constexpr double degrees_per_radian = 57.295779513082320876798154814105;
+
+// Angle between two vectors in [0, 180] degrees; atan2 keeps full precision near 0 and 180,
+// where acos of a dot product loses half the digits (slivers live there).
+inline double angle_degrees(const Eigen::Vector3d& u, const Eigen::Vector3d& v)
+{ return degrees_per_radian * std::atan2(u.cross(v).norm(), u.dot(v)); }
+
+template <typename Point_3>
+Eigen::Vector3d to_eigen(const Point_3& p)
+{ return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); }
+
+// Runs f(i) for i in [0, n) on all threads. OpenMP forbids exceptions from leaving the loop, so
+// the one of the lowest index is rethrown afterwards: the same error for any thread count.
+template <typename F>
+void parallel_for_rethrow(std::size_t n, const F& f)
+{
+  std::exception_ptr error;
+  std::ptrdiff_t error_index = std::ptrdiff_t(n);
+#pragma omp parallel for schedule(static)
+  for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i) {
+    try {
+      f(std::size_t(i));
+    } catch(...) {
+#pragma omp critical(lattice_mesher_3_quality_error)
+      if(i < error_index) { error_index = i; error = std::current_exception(); }
+    }
+  }
+  if(error) std::rethrow_exception(error);
+}
+
+// Serial, in index order: the sums, hence the figures, do not depend on the thread count.
+inline Quality_statistics summarize(const std::vector<double>& values)
+{
+  Quality_statistics s;
+  if(values.empty()) return s;
+  s.min = *std::min_element(values.begin(), values.end());
+  s.max = *std::max_element(values.begin(), values.end());
+  double sum = 0.;
+  for(double v : values) sum += v;
+  s.mean = sum / double(values.size());
+  double squares = 0.;
+  for(double v : values) squares += (v - s.mean) * (v - s.mean);
+  s.std = std::sqrt(squares / double(values.size()));
+  return s;
+}
+
+// The sorted list of unique edges (i < j) of the tetrahedra.
+inline std::vector<std::pair<int, int> > unique_edges(const std::vector<std::array<int, 4> >& tets)
+{
+  std::vector<std::pair<int, int> > edges;
+  edges.reserve(6 * tets.size());
+  for(const std::array<int, 4>& t : tets)
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j)
+        edges.emplace_back((std::min)(t[i], t[j]), (std::max)(t[i], t[j]));
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+// B at p, the isotropic map of the field.
+template <typename Point_3, typename FrameField>
+Eigen::Matrix3d isotropic_map_at(const FrameField& field, const Eigen::Vector3d& p)
+{
+  const Point_3 where(p[0], p[1], p[2]);
+  const Eigen::Matrix3d t = field.frame(where);
+  return isotropic_map(t, where);
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgLatticeMesher3Quality
+Quality of the tetrahedron (a, b, c, d), given in the space where it is measured (the isotropic
+space). The result does not depend on the orientation of the tetrahedron; a degenerate one has
+`rho` = `kappa` = 0.
+*/
+inline Tetrahedron_quality_3 tetrahedron_quality(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                                 const Eigen::Vector3d& c, const Eigen::Vector3d& d)
+{
+  // Area vectors of the faces opposite a, b, c, d, all outward for a positive tetrahedron
+  // and all inward for a negative one: the dihedral angles are the same either way.
+  const std::array<Eigen::Vector3d, 4> n = { (c - b).cross(d - b), (d - a).cross(c - a),
+                                             (b - a).cross(d - a), (c - a).cross(b - a) };
+  Tetrahedron_quality_3 q;
+  q.theta_min = 180.;
+  q.theta_max = 0.;
+  double squared_areas = 0.;
+  for(int i = 0; i < 4; ++i) {
+    squared_areas += .25 * n[i].squaredNorm();
+    // the faces i and j meet at the edge opposite both; its interior angle is pi - angle(n_i, n_j)
+    for(int j = i + 1; j < 4; ++j) {
+      const double theta = internal::angle_degrees(n[i], -n[j]);
+      q.theta_min = (std::min)(q.theta_min, theta);
+      q.theta_max = (std::max)(q.theta_max, theta);
+    }
+  }
+
+  const Eigen::Vector3d u = b - a, v = c - a, w = d - a;
+  const std::array<Eigen::Vector3d, 6> edges = { u, v, w, c - b, d - b, d - c };
+  double e_min2 = u.squaredNorm(), squared_lengths = 0.;
+  for(const Eigen::Vector3d& e : edges) {
+    e_min2 = (std::min)(e_min2, e.squaredNorm());
+    squared_lengths += e.squaredNorm();
+  }
+  const double six_volume = std::abs(u.dot(v.cross(w)));
+  if(six_volume > 0.) {
+    // r_circ = |circumcentre - a| = | |u|^2 v x w + |v|^2 w x u + |w|^2 u x v | / (2 u.(v x w))
+    const double r_circ =
+        (u.squaredNorm() * v.cross(w) + v.squaredNorm() * w.cross(u) + w.squaredNorm() * u.cross(v)).norm() /
+        (2. * six_volume);
+    q.rho = std::sqrt(6.) * std::sqrt(e_min2) / (4. * r_circ);
+    const double l_rms = std::sqrt(squared_lengths / 6.), a_rms = std::sqrt(squared_areas / 4.);
+    q.kappa = 3. * std::sqrt(6.) * (six_volume / 6.) / (2. * l_rms * a_rms);
+  }
+  return q;
+}
+
+/*!
+\ingroup PkgLatticeMesher3Quality
+Alignment error of an isotropic-space edge vector `e`: the smallest angle, in degrees, between
+`e` and the vectors of the lattice's one-ring (which holds both signs of every direction).
+*/
+inline double edge_alignment_error(const Eigen::Vector3d& e, const Lattice_3& lattice)
+{
+  if(lattice.one_ring.empty())
+    throw std::invalid_argument("edge_alignment_error(): the lattice has an empty one-ring");
+  double best = 180.;
+  for(const Eigen::Vector3d& o : lattice.one_ring) best = (std::min)(best, internal::angle_degrees(e, o));
+  return best;
+}
+
+/*!
+\ingroup PkgLatticeMesher3Quality
+Quality of every tetrahedron of `mesh`, mapped to the isotropic space by B = T^-1 at its
+centroid, T = `field.frame(centroid)`. Computed in parallel (OpenMP).
+
+\tparam FrameField a model of `FrameField_3` for points of type `Point_3`
+\throws std::domain_error if the frame at a centroid is singular
+*/
+template <typename Point_3, typename FrameField>
+std::vector<Tetrahedron_quality_3> compute_tetrahedra_quality(const Tetrahedral_mesh_3<Point_3>& mesh,
+                                                              const FrameField& field)
+{
+  std::vector<Tetrahedron_quality_3> quality(mesh.tets.size());
+  internal::parallel_for_rethrow(mesh.tets.size(), [&](std::size_t t) {
+    std::array<Eigen::Vector3d, 4> p;
+    for(int i = 0; i < 4; ++i) p[i] = internal::to_eigen(mesh.points[mesh.tets[t][i]]);
+    const Eigen::Vector3d centroid = .25 * (p[0] + p[1] + p[2] + p[3]);
+    const Eigen::Matrix3d b = internal::isotropic_map_at<Point_3>(field, centroid);
+    for(Eigen::Vector3d& q : p) q = b * (q - centroid);
+    quality[t] = tetrahedron_quality(p[0], p[1], p[2], p[3]);
+  });
+  return quality;
+}
+
+/*!
+\ingroup PkgLatticeMesher3Quality
+Alignment error (degrees) of every unique edge of `mesh`, mapped to the isotropic space by B at
+its midpoint. The edges are taken in lexicographic order of their sorted vertex pairs.
+
+\throws std::domain_error if the frame at a midpoint is singular
+*/
+template <typename Point_3, typename FrameField>
+std::vector<double> compute_edge_alignment_errors(const Tetrahedral_mesh_3<Point_3>& mesh,
+                                                  const FrameField& field, const Lattice_3& lattice)
+{
+  const std::vector<std::pair<int, int> > edges = internal::unique_edges(mesh.tets);
+  std::vector<double> errors(edges.size());
+  internal::parallel_for_rethrow(edges.size(), [&](std::size_t e) {
+    const Eigen::Vector3d p = internal::to_eigen(mesh.points[edges[e].first]);
+    const Eigen::Vector3d q = internal::to_eigen(mesh.points[edges[e].second]);
+    const Eigen::Matrix3d b = internal::isotropic_map_at<Point_3>(field, .5 * (p + q));
+    errors[e] = edge_alignment_error(b * (q - p), lattice);
+  });
+  return errors;
+}
+
+/*!
+\ingroup PkgLatticeMesher3Quality
+Measures `mesh` in the isotropic space of `field`: the dihedral angles, rho and kappa of every
+tetrahedron (mapped by B at its centroid) and the alignment error epsilon of every edge with
+respect to `lattice` (mapped by B at its midpoint). The result is the same for any number of
+threads. `hausdorff` is left negative (see `boundary_hausdorff_distance()`) and `seconds` at 0.
+
+\tparam FrameField a model of `FrameField_3` for points of type `Point_3`
+\throws std::domain_error if the frame is singular at a centroid or a midpoint
+*/
+template <typename Point_3, typename FrameField>
+Mesh_quality_3 compute_mesh_quality(const Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field,
+                                    const Lattice_3& lattice)
+{
+  Mesh_quality_3 result;
+  result.vertices = mesh.points.size();
+  result.tets = mesh.tets.size();
+
+  const std::vector<Tetrahedron_quality_3> quality = compute_tetrahedra_quality(mesh, field);
+  std::vector<double> values(quality.size());
+  auto summarize_member = [&](double Tetrahedron_quality_3::*member) {
+    for(std::size_t t = 0; t < quality.size(); ++t) values[t] = quality[t].*member;
+    return internal::summarize(values);
+  };
+  result.theta_min = summarize_member(&Tetrahedron_quality_3::theta_min);
+  result.theta_max = summarize_member(&Tetrahedron_quality_3::theta_max);
+  result.rho = summarize_member(&Tetrahedron_quality_3::rho);
+  result.kappa = summarize_member(&Tetrahedron_quality_3::kappa);
+  for(const Tetrahedron_quality_3& q : quality) {
+    if(q.theta_min < 20.) ++result.below20;
+    if(q.theta_min < 40.) ++result.below40;
+  }
+  result.epsilon = internal::summarize(compute_edge_alignment_errors(mesh, field, lattice));
+  return result;
+}
+
+/*!
+\ingroup PkgLatticeMesher3Quality
+Symmetric Hausdorff distance between the boundary triangles of `mesh` and the boundary surface
+of `domain`, both sampled at `spacing`: the largest of
+- the distance to the surface (`domain.project_on_surface()`) of the boundary vertices and of
+  points at most `spacing` apart on every boundary triangle, and
+- the distance to the boundary triangles of the points of `domain.sample_surface(spacing)`.
+
+\tparam Domain a model of `LatticeMeshDomain_3` whose points are of type `Point_3`
+\throws std::invalid_argument if `spacing` is not positive or the mesh has no boundary face
+*/
+template <typename Point_3, typename Domain>
+double boundary_hausdorff_distance(const Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain,
+                                   double spacing)
+{
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel K;
+  typedef typename K::Triangle_3 Triangle_3;
+  typedef std::vector<Triangle_3> Triangles;
+  typedef CGAL::AABB_triangle_primitive<K, typename Triangles::const_iterator> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
+
+  if(!(spacing > 0.))
+    throw std::invalid_argument("boundary_hausdorff_distance(): the sampling spacing must be positive");
+  if(mesh.boundary_faces.empty())
+    throw std::invalid_argument("boundary_hausdorff_distance(): the mesh has no boundary face");
+
+  Triangles triangles;
+  triangles.reserve(mesh.boundary_faces.size());
+  for(const std::array<int, 3>& f : mesh.boundary_faces)
+    triangles.emplace_back(mesh.points[f[0]], mesh.points[f[1]], mesh.points[f[2]]);
+
+  // mesh -> surface: a barycentric grid of n x n sub-triangles per face, n set by its longest edge
+  std::vector<double> mesh_to_surface(triangles.size(), 0.);
+  internal::parallel_for_rethrow(triangles.size(), [&](std::size_t f) {
+    const Eigen::Vector3d a = internal::to_eigen(triangles[f][0]);
+    const Eigen::Vector3d ab = internal::to_eigen(triangles[f][1]) - a;
+    const Eigen::Vector3d ac = internal::to_eigen(triangles[f][2]) - a;
+    const double longest = (std::max)({ ab.norm(), ac.norm(), (ac - ab).norm() });
+    const int n = (std::max)(1, int(std::ceil(longest / spacing)));
+    double farthest = 0.;
+    for(int i = 0; i <= n; ++i)
+      for(int j = 0; i + j <= n; ++j) {
+        const Eigen::Vector3d q = a + (double(i) / n) * ab + (double(j) / n) * ac;
+        const double d2 = CGAL::to_double(domain.project_on_surface(Point_3(q[0], q[1], q[2])).squared_distance);
+        farthest = (std::max)(farthest, d2);
+      }
+    mesh_to_surface[f] = farthest;
+  });
+
+  // surface -> mesh; the tree's search structures are built before the concurrent queries
+  std::vector<Point_3> samples;
+  domain.sample_surface(spacing, std::back_inserter(samples));
+  Tree tree(triangles.begin(), triangles.end());
+  tree.build();
+  tree.accelerate_distance_queries();
+  std::vector<double> surface_to_mesh(samples.size(), 0.);
+  internal::parallel_for_rethrow(samples.size(), [&](std::size_t s) {
+    surface_to_mesh[s] = CGAL::to_double(tree.squared_distance(samples[s]));
+  });
+
+  double farthest = 0.;
+  for(double d2 : mesh_to_surface) farthest = (std::max)(farthest, d2);
+  for(double d2 : surface_to_mesh) farthest = (std::max)(farthest, d2);
+  return std::sqrt(farthest);
+}
+
+namespace internal {
+
+inline void write_table_row(std::ostream& os, const char* name, const Quality_statistics& s)
+{
+  os << "  " << std::left << std::setw(18) << name << std::right
+     << std::setw(12) << s.min << std::setw(12) << s.mean << std::setw(12) << s.std
+     << std::setw(12) << s.max << '\n';
+}
+
+inline void write_table_count(std::ostream& os, const char* name, std::size_t count, std::size_t total)
+{
+  os << "  " << std::left << std::setw(18) << name << std::right << std::setw(12) << count;
+  if(total > 0) {
+    const std::streamsize precision = os.precision(2);
+    os << "  (" << 100. * double(count) / double(total) << " %)";
+    os.precision(precision);
+  }
+  os << '\n';
+}
+
+// A field of Quality_statistics as written to JSON.
+struct Json_statistic
+{
+  const char* name;
+  double Quality_statistics::*value;
+};
+
+inline constexpr Json_statistic json_min = { "min", &Quality_statistics::min };
+inline constexpr Json_statistic json_max = { "max", &Quality_statistics::max };
+inline constexpr Json_statistic json_mean = { "mean", &Quality_statistics::mean };
+inline constexpr Json_statistic json_std = { "std", &Quality_statistics::std };
+
+// `  "name": {"field": value, ...},` with the listed fields of `s` only
+inline void write_json_statistics(std::ostream& os, const char* name, const Quality_statistics& s,
+                                  std::initializer_list<Json_statistic> fields)
+{
+  os << "  \"" << name << "\": {";
+  const char* separator = "";
+  for(const Json_statistic& f : fields) {
+    os << separator << '"' << f.name << "\": " << s.*f.value;
+    separator = ", ";
+  }
+  os << "},\n";
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgLatticeMesher3Quality
+Writes `q` as a fixed-width table (angles in degrees).
+*/
+inline void print_quality_table(std::ostream& os, const Mesh_quality_3& q)
+{
+  const std::ios_base::fmtflags flags = os.flags();
+  const std::streamsize precision = os.precision();
+  os << std::fixed << std::setprecision(4);
+  os << "  " << std::left << std::setw(18) << "vertices" << std::right << std::setw(12) << q.vertices << '\n'
+     << "  " << std::left << std::setw(18) << "tetrahedra" << std::right << std::setw(12) << q.tets << '\n'
+     << "  " << std::left << std::setw(18) << "" << std::right << std::setw(12) << "min" << std::setw(12)
+     << "mean" << std::setw(12) << "std" << std::setw(12) << "max" << '\n';
+  internal::write_table_row(os, "theta_min (deg)", q.theta_min);
+  internal::write_table_row(os, "theta_max (deg)", q.theta_max);
+  internal::write_table_row(os, "rho", q.rho);
+  internal::write_table_row(os, "kappa", q.kappa);
+  internal::write_table_row(os, "epsilon (deg)", q.epsilon);
+  internal::write_table_count(os, "theta_min < 20", q.below20, q.tets);
+  internal::write_table_count(os, "theta_min < 40", q.below40, q.tets);
+  os << "  " << std::left << std::setw(18) << "Hausdorff" << std::right;
+  if(q.hausdorff < 0.) os << std::setw(12) << "-" << "  (not measured)\n";
+  else os << std::setw(12) << q.hausdorff << '\n';
+  os << "  " << std::left << std::setw(18) << "seconds" << std::right
+     << "optimize " << q.seconds.optimize << ", mesh " << q.seconds.mesh << ", total " << q.seconds.total << '\n';
+  os.flags(flags);
+  os.precision(precision);
+}
+
+/*!
+\ingroup PkgLatticeMesher3Quality
+Writes `q` as a JSON object with the keys `vertices`, `tets`, `theta_min` {`min`, `mean`, `std`},
+`theta_max` {`max`, `mean`, `std`}, `rho` and `kappa` {`min`, `mean`, `std`}, `epsilon`
+{`mean`, `std`}, `below20`, `below40`, `hausdorff` (-1 when not measured) and `seconds`
+{`optimize`, `mesh`, `total`}. Numbers have 10 significant digits.
+*/
+inline void write_quality_json(std::ostream& os, const Mesh_quality_3& q)
+{
+  const std::ios_base::fmtflags flags = os.flags();
+  const std::streamsize precision = os.precision();
+  os.unsetf(std::ios_base::floatfield);
+  os << std::setprecision(10);
+  os << "{\n"
+     << "  \"vertices\": " << q.vertices << ",\n"
+     << "  \"tets\": " << q.tets << ",\n";
+  using internal::json_min;
+  using internal::json_max;
+  using internal::json_mean;
+  using internal::json_std;
+  internal::write_json_statistics(os, "theta_min", q.theta_min, { json_min, json_mean, json_std });
+  internal::write_json_statistics(os, "theta_max", q.theta_max, { json_max, json_mean, json_std });
+  internal::write_json_statistics(os, "rho", q.rho, { json_min, json_mean, json_std });
+  internal::write_json_statistics(os, "kappa", q.kappa, { json_min, json_mean, json_std });
+  internal::write_json_statistics(os, "epsilon", q.epsilon, { json_mean, json_std });
+  os << "  \"below20\": " << q.below20 << ",\n"
+     << "  \"below40\": " << q.below40 << ",\n"
+     << "  \"hausdorff\": " << q.hausdorff << ",\n"
+     << "  \"seconds\": {\"optimize\": " << q.seconds.optimize << ", \"mesh\": " << q.seconds.mesh
+     << ", \"total\": " << q.seconds.total << "}\n"
+     << "}\n";
+  os.flags(flags);
+  os.precision(precision);
+}
+
+} // namespace Lattice_mesher_3
+} // namespace CGAL
+
+#endif // CGAL_LATTICE_MESHER_3_MESH_QUALITY_H

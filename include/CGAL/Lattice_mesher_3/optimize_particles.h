@@ -1,0 +1,297 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Lattice_mesher_3 developers
+
+#ifndef CGAL_LATTICE_MESHER_3_OPTIMIZE_PARTICLES_H
+#define CGAL_LATTICE_MESHER_3_OPTIMIZE_PARTICLES_H
+
+#include <CGAL/Lattice_mesher_3/Gaussian_hole_kernel_3.h>
+#include <CGAL/Lattice_mesher_3/Lattice_3.h>
+#include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
+#include <CGAL/Lattice_mesher_3/frame_fields.h>
+#include <CGAL/Lattice_mesher_3/internal/particle_neighbors.h>
+
+#include <Eigen/Core>
+#include <LBFGS.h>
+
+#include <algorithm>
+#include <iostream>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Lattice_mesher_3 {
+
+/// Settings of one optimization round (Alg. 1 of the paper); defaults are the paper's.
+struct Optimization_options
+{
+  double edge_length = 0.;          ///< l*, in the isotropic space
+  double neighbor_radius = 1.3;     ///< R / l*: pairs closer than this (isotropic) interact
+  double gradient_tolerance = 1e-2; ///< EpsG on the RMS particle gradient, in units of 1/l*
+  int max_iterations = 13;          ///< MaxIts; 0 = until converged (at most `iteration_cap`)
+  int iteration_cap = 1000;         ///< bound on a round without MaxIts, so that it always ends
+  double boundary_distance = 0.3;   ///< particles this close (x l*) to the boundary / an edge snap to it
+  int threads = 1;
+};
+
+/// What a round did.
+struct Optimization_result
+{
+  int iterations = 0;
+  int restarts = 0;       ///< line-search failures recovered by restarting L-BFGS
+  double energy = 0.;     ///< total GHK energy over interacting pairs, at the end
+  double gradient_rms = 0.;
+};
+
+namespace internal {
+
+// The total GHK energy of a particle set as a function of the positions X (in units of l*),
+// over a frozen neighbour graph. Fixed particles have zero gradient; the gradient of a
+// sharp-edge particle is projected on its edge tangent, of a boundary particle on its tangent
+// plane, so the L-BFGS steps slide them along their constraint. Work buffers are allocated
+// once: the evaluation itself allocates nothing.
+class Particle_energy_3
+{
+public:
+  Particle_energy_3(const Neighbor_graph& graph, const Gaussian_hole_kernel_3& kernel,
+                    const std::vector<Particle_kind>& kinds, const std::vector<Vec3>& directions,
+                    int threads)
+    : graph_(graph), kernel_(kernel), kinds_(kinds), directions_(directions), threads_(threads),
+      pair_energy_(graph.pairs.size()), pair_gradient_(graph.pairs.size())
+  {}
+
+  double operator()(const Eigen::VectorXd& X, Eigen::VectorXd& G)
+  {
+    const std::ptrdiff_t np = std::ptrdiff_t(graph_.pairs.size());
+    const std::ptrdiff_t n = std::ptrdiff_t(graph_.number_of_particles());
+#pragma omp parallel num_threads(threads_)
+    {
+#pragma omp for schedule(static)
+      for(std::ptrdiff_t p = 0; p < np; ++p) {
+        const int i = graph_.pairs[p][0], j = graph_.pairs[p][1];
+        const Mat3& B = graph_.pair_map[p];
+        const Vec3 v = B * (X.segment<3>(3 * i) - X.segment<3>(3 * j));
+        Vec3 f;
+        pair_energy_[p] = kernel_.energy_and_force(v, f);
+        pair_gradient_[p] = -(B.transpose() * f);   // dE_ij/dX_i; dE_ij/dX_j is its opposite
+      }
+#pragma omp for schedule(static)
+      for(std::ptrdiff_t i = 0; i < n; ++i) {
+        Vec3 g = Vec3::Zero();
+        for(int e = graph_.offsets[i]; e < graph_.offsets[i + 1]; ++e) {
+          const int p = graph_.pair_of[e];
+          if(graph_.pairs[p][0] == i) g += pair_gradient_[p];
+          else g -= pair_gradient_[p];
+        }
+        G.segment<3>(3 * i) = constrain(i, g);
+      }
+    }
+    // serial sum: the same energy for any number of threads
+    double e = 0.;
+    for(double pe : pair_energy_) e += pe;
+    if(e < best_energy_) { best_energy_ = e; best_X_ = X; }
+    return e;
+  }
+
+  double best_energy() const { return best_energy_; }
+  const Eigen::VectorXd& best_point() const { return best_X_; }
+
+private:
+  Vec3 constrain(std::ptrdiff_t i, const Vec3& g) const
+  {
+    switch(kinds_[i]) {
+      case Particle_kind::FIXED: return Vec3::Zero();
+      case Particle_kind::SHARP_EDGE: return directions_[i] * directions_[i].dot(g);
+      case Particle_kind::BOUNDARY: return g - directions_[i] * directions_[i].dot(g);
+      case Particle_kind::FREE: break;
+    }
+    return g;
+  }
+
+  const Neighbor_graph& graph_;
+  const Gaussian_hole_kernel_3& kernel_;
+  const std::vector<Particle_kind>& kinds_;
+  const std::vector<Vec3>& directions_;
+  int threads_;
+  std::vector<double> pair_energy_;
+  std::vector<Vec3> pair_gradient_;
+  double best_energy_ = std::numeric_limits<double>::infinity();
+  Eigen::VectorXd best_X_;
+};
+
+template <typename Point_3>
+std::vector<Vec3> to_vectors(const std::vector<Point_3>& points)
+{
+  std::vector<Vec3> x(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    x[i] = Vec3(CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z()));
+  return x;
+}
+
+template <typename Point_3>
+Vec3 to_vector(const Point_3& p) { return Vec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); }
+
+// Unit normal (boundary) or tangent (sharp edge) that constrains each particle's motion.
+template <typename Domain, typename Point_3>
+std::vector<Vec3> constraint_directions(const Particle_set_3<Point_3>& ps, const Domain& domain, int threads)
+{
+  std::vector<Vec3> d(ps.size(), Vec3::Zero());
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 256)
+  for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(ps.size()); ++i) {
+    if(ps.kinds[i] == Particle_kind::BOUNDARY)
+      d[i] = to_vector(domain.project_on_surface(ps.points[i]).direction);
+    else if(ps.kinds[i] == Particle_kind::SHARP_EDGE)
+      d[i] = to_vector(domain.project_on_curve(ps.points[i], std::size_t(ps.feature[i])).direction);
+  }
+  return d;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgLatticeMesher3Optimizer
+
+Snaps particles to their constraints after an optimization round (Alg. 1, lines 14-21): a
+free particle outside the domain, or inside within `boundary_distance` x l* of the boundary
+(measured in the isotropic space of the field), is projected on the boundary and becomes a
+boundary particle; a boundary particle that close to a sharp edge is projected on it and becomes
+a sharp-edge particle. Boundary and sharp-edge particles, which slid along tangent planes and
+lines, are put back on their surface and curve. Returns the number of particles that changed kind.
+*/
+template <typename Domain, typename FrameField, typename Point_3>
+std::size_t snap_particles_to_boundary(Particle_set_3<Point_3>& ps, const Domain& domain,
+                                       const FrameField& field, const Optimization_options& o)
+{
+  using internal::Vec3;
+  const double threshold = o.boundary_distance * o.edge_length;
+  const bool has_features = domain.number_of_curves() > 0;
+  std::size_t changed = 0;
+#pragma omp parallel for num_threads(o.threads) schedule(dynamic, 256) reduction(+:changed)
+  for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(ps.size()); ++i) {
+    Point_3& p = ps.points[i];
+    Particle_kind& kind = ps.kinds[i];
+    if(kind == Particle_kind::FIXED) continue;
+    if(kind == Particle_kind::SHARP_EDGE) { p = domain.project_on_curve(p, std::size_t(ps.feature[i])).point; continue; }
+    const Eigen::Matrix3d B = internal::isotropic_map(field.frame(p), p);
+    const auto s = domain.project_on_surface(p);
+    if(kind == Particle_kind::FREE) {
+      if(domain.is_inside(p) && (B * (internal::to_vector(p) - internal::to_vector(s.point))).norm() > threshold)
+        continue;
+      kind = Particle_kind::BOUNDARY;
+      ++changed;
+    }
+    p = s.point;
+    if(has_features) {
+      const auto c = domain.project_on_features(p);
+      if(c.index >= 0 && (B * (internal::to_vector(p) - internal::to_vector(c.point))).norm() <= threshold) {
+        p = c.point;
+        kind = Particle_kind::SHARP_EDGE;
+        ps.feature[i] = c.index;
+        ++changed;
+      }
+    }
+  }
+  return changed;
+}
+
+/*!
+\ingroup PkgLatticeMesher3Optimizer
+
+One optimization round (Alg. 1): minimizes the GHK energy of the particles with L-BFGS (LBFGS++)
+over the pairs within `neighbor_radius` x l* in the isotropic space, holding each pair's map
+B((p_i + p_j)/2) fixed during the round, so that L-BFGS sees a smooth energy and its exact
+gradient. Stops when the RMS gradient (in units of 1/l*) is below `gradient_tolerance`, or after
+`max_iterations`; without an iteration limit the neighbour graph is rebuilt every 50 iterations
+so that pairs coming into range are not missed. A line-search failure restarts L-BFGS from the
+best point seen. Ends with `snap_particles_to_boundary()`.
+*/
+template <typename Domain, typename FrameField, typename Point_3>
+Optimization_result optimize_particles_round(Particle_set_3<Point_3>& ps, const Domain& domain,
+                                             const FrameField& field, const Lattice_3& lattice,
+                                             const Optimization_options& o)
+{
+  typedef typename Domain::Geom_traits K;
+  using internal::Vec3;
+  if(!(o.edge_length > 0.) || !std::isfinite(o.edge_length))
+    throw std::invalid_argument("optimize_particles_round(): the edge length must be positive and finite");
+
+  Optimization_result result;
+  const Gaussian_hole_kernel_3 kernel(lattice);
+  const std::size_t n = ps.size();
+  if(n < 2) return result;
+
+  const int chunk = 50;
+  int remaining = o.max_iterations > 0 ? o.max_iterations : o.iteration_cap;
+  std::size_t movable = 0;
+  for(Particle_kind k : ps.kinds) movable += (k != Particle_kind::FIXED);
+  const double tolerance = o.gradient_tolerance * std::sqrt(double((std::max)(movable, std::size_t(1))));
+
+  while(remaining > 0) {
+    std::vector<Vec3> x = internal::to_vectors(ps.points);
+    const internal::Particle_frames frames = internal::compute_particle_frames<K>(x, field, o.threads);
+    const internal::Neighbor_graph graph =
+      internal::build_neighbor_graph<K>(x, frames, field, o.neighbor_radius * o.edge_length, o.threads);
+    const std::vector<Vec3> directions = internal::constraint_directions(ps, domain, o.threads);
+    internal::Particle_energy_3 energy(graph, kernel, ps.kinds, directions, o.threads);
+
+    Eigen::VectorXd X(3 * n);
+    for(std::size_t i = 0; i < n; ++i) X.segment<3>(3 * i) = x[i] / o.edge_length;
+
+    LBFGSpp::LBFGSParam<double> param;
+    param.epsilon = tolerance;
+    param.epsilon_rel = 0.;
+    param.max_iterations = (std::min)(remaining, o.max_iterations > 0 ? o.max_iterations : chunk);
+    param.linesearch = LBFGSpp::LBFGS_LINESEARCH_BACKTRACKING_STRONG_WOLFE;
+    param.max_linesearch = 40;
+    bool converged = false;
+    for(int attempt = 0; attempt < 3 && param.max_iterations > 0; ++attempt) {
+      LBFGSpp::LBFGSSolver<double, LBFGSpp::LineSearchNocedalWright> solver(param);
+      double fx = 0.;
+      try {
+        const int its = solver.minimize(energy, X, fx);
+        result.iterations += its;
+        remaining -= its;
+        converged = its < param.max_iterations;
+        break;
+      } catch(const std::exception&) {
+        // line search stalled (flat or noisy energy): restart from the best point seen
+        ++result.restarts;
+        X = energy.best_point();
+        result.iterations += 1;
+        remaining -= 1;
+        param.max_iterations = (std::min)(param.max_iterations, remaining);
+      }
+    }
+    if(!X.allFinite()) { X = energy.best_point(); converged = true; }
+    if(energy.best_point().size() == X.size() && energy.best_energy() < std::numeric_limits<double>::infinity()) {
+      Eigen::VectorXd G(3 * n);
+      const double e_end = energy(X, G);
+      if(energy.best_energy() < e_end) { X = energy.best_point(); }
+      result.energy = (std::min)(e_end, energy.best_energy());
+      result.gradient_rms = G.norm() / std::sqrt(double((std::max)(movable, std::size_t(1))));
+    }
+    for(std::size_t i = 0; i < n; ++i) {
+      const Vec3 p = X.segment<3>(3 * i) * o.edge_length;
+      ps.points[i] = Point_3(p[0], p[1], p[2]);
+    }
+#ifdef CGAL_LATTICE_MESHER_3_VERBOSE
+    std::cerr << "  chunk: " << result.iterations << " its, E " << result.energy << ", rms gradient " << result.gradient_rms
+              << ", restarts " << result.restarts << (converged ? " (converged)" : "") << "\n";
+#endif
+    if(converged || o.max_iterations > 0) break;
+  }
+  snap_particles_to_boundary(ps, domain, field, o);
+  return result;
+}
+
+} // namespace Lattice_mesher_3
+} // namespace CGAL
+
+#endif // CGAL_LATTICE_MESHER_3_OPTIMIZE_PARTICLES_H

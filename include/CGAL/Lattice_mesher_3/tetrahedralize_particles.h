@@ -1,0 +1,187 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Lattice_mesher_3 developers
+
+#ifndef CGAL_LATTICE_MESHER_3_TETRAHEDRALIZE_PARTICLES_H
+#define CGAL_LATTICE_MESHER_3_TETRAHEDRALIZE_PARTICLES_H
+
+#include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <CGAL/centroid.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Lattice_mesher_3 {
+
+/// Settings of `tetrahedralize_particles()`.
+struct Tetrahedralization_options
+{
+  /// A cell whose vertices all lie on the boundary is kept only if its centroid is at least this
+  /// fraction of its mean edge length inside: flat cells spanning a face add no volume, only slivers.
+  double flat_cell_ratio = 0.1;
+  int threads = 1;
+};
+
+/*!
+\ingroup PkgLatticeMesher3Tetrahedralization
+
+Connects particles into a tetrahedral mesh: the Delaunay tetrahedralization of all particles
+(CGAL `Delaunay_triangulation_3`, exact predicates), restricted to the domain by keeping the
+cells whose centroid is inside it; cells whose four vertices are boundary particles and whose
+centroid lies within `flat_cell_ratio` x their mean edge length of the boundary are dropped
+(they would be slivers lying on the surface). The boundary is then repaired into a closed
+2-manifold: cells are removed around non-manifold edges and vertices until none remains.
+Particles that end up in no tetrahedron are not output. The tetrahedra are positively
+oriented and `boundary_faces` are oriented outward.
+
+Delaunay rather than TetGen's constrained tetrahedralization: the boundary particles lie on
+the surface and the interior ones at least 0.3 l* inside, so the restricted Delaunay complex
+already conforms to the boundary; CGAL's triangulation is exact and robust on degenerate
+(cospherical lattice) input, on which TetGen 1.5 may crash, and it keeps the package GPL.
+*/
+template <typename Domain, typename Point_3>
+Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_3>& ps, const Domain& domain,
+                                                     const Tetrahedralization_options& o = Tetrahedralization_options())
+{
+  typedef typename Domain::Geom_traits K;
+  typedef CGAL::Triangulation_vertex_base_with_info_3<int, K> Vb;
+  typedef CGAL::Triangulation_cell_base_with_info_3<char, K> Cb;
+  typedef CGAL::Triangulation_data_structure_3<Vb, Cb> Tds;
+  typedef CGAL::Delaunay_triangulation_3<K, Tds> Dt;
+  typedef typename Dt::Cell_handle Cell_handle;
+  typedef typename Dt::Vertex_handle Vertex_handle;
+
+  if(ps.size() < 4)
+    throw std::invalid_argument("tetrahedralize_particles(): fewer than 4 particles");
+  std::vector<std::pair<Point_3, int> > input(ps.size());
+  for(std::size_t i = 0; i < ps.size(); ++i) input[i] = { ps.points[i], int(i) };
+  Dt dt(input.begin(), input.end());
+  if(dt.dimension() < 3)
+    throw std::invalid_argument("tetrahedralize_particles(): the particles are coplanar");
+
+  auto on_boundary = [&](Vertex_handle v) { return ps.kinds[v->info()] != Particle_kind::FREE; };
+
+  // 1. Cells inside the domain.
+  std::vector<Cell_handle> cells;
+  for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) cells.push_back(c);
+#pragma omp parallel for num_threads(o.threads) schedule(dynamic, 256)
+  for(std::ptrdiff_t k = 0; k < std::ptrdiff_t(cells.size()); ++k) {
+    const Cell_handle c = cells[k];
+    const Point_3 g = CGAL::centroid(c->vertex(0)->point(), c->vertex(1)->point(),
+                                     c->vertex(2)->point(), c->vertex(3)->point());
+    char inside = domain.is_inside(g) ? 1 : 0;
+    if(inside && on_boundary(c->vertex(0)) && on_boundary(c->vertex(1)) &&
+       on_boundary(c->vertex(2)) && on_boundary(c->vertex(3))) {
+      double mean_edge = 0.;
+      for(int i = 0; i < 4; ++i) for(int j = i + 1; j < 4; ++j)
+        mean_edge += std::sqrt(CGAL::to_double((c->vertex(i)->point() - c->vertex(j)->point()).squared_length()));
+      mean_edge /= 6.;
+      if(std::sqrt(domain.project_on_surface(g).squared_distance) < o.flat_cell_ratio * mean_edge) inside = 0;
+    }
+    c->info() = inside;
+  }
+  for(auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c)
+    if(dt.is_infinite(c)) c->info() = 0;
+
+  // 2. Repair: a boundary edge in more than two boundary faces, or a vertex whose boundary
+  // faces form several fans, is made manifold by removing the kept cells around it that have
+  // a face on the boundary (peeling), repeated until nothing changes.
+  auto is_boundary_facet = [](Cell_handle c, int i) { return c->info() != c->neighbor(i)->info(); };
+  for(int pass = 0; pass < 20; ++pass) {
+    std::set<Cell_handle> to_remove;
+    std::vector<Cell_handle> ring;
+    for(auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+      ring.clear();
+      auto cc = dt.incident_cells(*e), done = cc;
+      do { ring.push_back(cc); ++cc; } while(cc != done);
+      int changes = 0;
+      for(std::size_t k = 0; k < ring.size(); ++k) changes += ring[k]->info() != ring[(k + 1) % ring.size()]->info();
+      if(changes > 2)
+        for(Cell_handle c : ring) if(c->info()) to_remove.insert(c);
+    }
+    for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+      // count connected fans of boundary facets around v through shared boundary edges
+      std::vector<Cell_handle> inc;
+      dt.incident_cells(v, std::back_inserter(inc));
+      bool any_in = false, any_out = false;
+      for(Cell_handle c : inc) (c->info() ? any_in : any_out) = true;
+      if(!any_in || !any_out) continue;
+      // kept cells around v connected through kept-kept faces containing v, and likewise outside:
+      // v is manifold iff the inside cells form one component and the outside cells one
+      auto components = [&](char side) {
+        std::map<Cell_handle, int> comp;
+        int ncomp = 0;
+        for(Cell_handle s : inc) {
+          if(s->info() != side || comp.count(s)) continue;
+          ++ncomp;
+          std::vector<Cell_handle> stack(1, s);
+          comp[s] = ncomp;
+          while(!stack.empty()) {
+            Cell_handle c = stack.back(); stack.pop_back();
+            const int iv = c->index(v);
+            for(int i = 0; i < 4; ++i) {
+              if(i == iv) continue;
+              Cell_handle nb = c->neighbor(i);
+              if(nb->info() == side && nb->has_vertex(v) && !comp.count(nb)) { comp[nb] = ncomp; stack.push_back(nb); }
+            }
+          }
+        }
+        return ncomp;
+      };
+      if(components(1) > 1 || components(0) > 1)
+        for(Cell_handle c : inc) if(c->info()) to_remove.insert(c);
+    }
+    if(to_remove.empty()) break;
+    // remove only cells that touch the boundary, so that repairs stay local
+    std::size_t removed = 0;
+    for(Cell_handle c : to_remove) {
+      bool touches = false;
+      for(int i = 0; i < 4; ++i) touches = touches || is_boundary_facet(c, i);
+      if(touches) { c->info() = 0; ++removed; }
+    }
+    if(removed == 0) for(Cell_handle c : to_remove) c->info() = 0;
+  }
+
+  // 3. Output, with the particles that are used renumbered.
+  Tetrahedral_mesh_3<Point_3> mesh;
+  std::vector<int> index(ps.size(), -1);
+  auto vid = [&](Vertex_handle v) {
+    int& id = index[v->info()];
+    if(id < 0) { id = int(mesh.points.size()); mesh.points.push_back(ps.points[v->info()]); mesh.vertex_kinds.push_back(ps.kinds[v->info()]); }
+    return id;
+  };
+  for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
+    if(!c->info()) continue;
+    mesh.tets.push_back({ vid(c->vertex(0)), vid(c->vertex(1)), vid(c->vertex(2)), vid(c->vertex(3)) });
+    for(int i = 0; i < 4; ++i) {
+      if(c->neighbor(i)->info()) continue;
+      // (a, b, c) with the cell's own vertex d behind it: orientation(a, b, c, d) is negative
+      // for the outward normal
+      int a = (i + 1) & 3, b = (i + 2) & 3, d3 = (i + 3) & 3;
+      if(CGAL::orientation(c->vertex(a)->point(), c->vertex(b)->point(), c->vertex(d3)->point(),
+                           c->vertex(i)->point()) != CGAL::NEGATIVE) std::swap(a, b);
+      mesh.boundary_faces.push_back({ vid(c->vertex(a)), vid(c->vertex(b)), vid(c->vertex(d3)) });
+    }
+  }
+  return mesh;
+}
+
+} // namespace Lattice_mesher_3
+} // namespace CGAL
+
+#endif // CGAL_LATTICE_MESHER_3_TETRAHEDRALIZE_PARTICLES_H

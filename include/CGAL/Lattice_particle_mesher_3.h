@@ -1,0 +1,268 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Lattice_mesher_3 developers
+
+#ifndef CGAL_LATTICE_PARTICLE_MESHER_3_H
+#define CGAL_LATTICE_PARTICLE_MESHER_3_H
+
+#include <CGAL/Lattice_mesher_traits_3.h>
+#include <CGAL/Lattice_mesher_3/Lattice_3.h>
+#include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
+#include <CGAL/Lattice_mesher_3/frame_fields.h>
+#include <CGAL/Lattice_mesher_3/insert_delete_particles.h>
+#include <CGAL/Lattice_mesher_3/optimize_particles.h>
+#include <CGAL/Lattice_mesher_3/tetrahedralize_particles.h>
+#include <CGAL/Lattice_mesher_3/internal/field_sampling.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+
+namespace CGAL {
+namespace Lattice_mesher_3 {
+
+/// What the optimizer reports after each round (see `LatticeMesherVisitor_3`).
+struct Round_report
+{
+  int level = 0;            ///< coarse-to-fine level: 0 is the final edge length
+  int round = 0;            ///< round within the level
+  bool final_round = false; ///< the closing, tightly converged round
+  std::size_t particles = 0;
+  std::size_t deleted = 0, inserted = 0;
+  int iterations = 0;
+  double energy = 0.;       ///< total GHK energy
+  double seconds = 0.;      ///< since the optimization started
+};
+
+/// The visitor that does nothing.
+struct Null_lattice_mesher_visitor
+{
+  void round_done(const Round_report&) {}
+};
+
+/// Parameters of `Lattice_particle_mesher_3`, defaulting to the paper's values.
+struct Lattice_mesher_parameters
+{
+  double edge_length = 0.;             ///< l*, in the isotropic space of the field (required)
+  Lattice_type lattice = Lattice_type::BCC;
+  unsigned int seed = 0;               ///< random start; same seed and threads give the same mesh
+  int threads = 1;
+  int max_rounds = -1;                 ///< MaxRoundNum; -1: 16 without a coarse level, 8 with
+  int coarse_levels = 1;               ///< k: start at 2^k l*
+  double sigma_ratio = 0.3;            ///< sigma / l_closest
+  double neighbor_radius = 1.3;        ///< R / l*
+  double gradient_tolerance = 1e-2;    ///< EpsG of the rounds
+  double final_gradient_tolerance = 1e-4; ///< EpsG of the last round
+};
+
+} // namespace Lattice_mesher_3
+
+/*!
+\ingroup PkgLatticeMesher3Ref
+
+The particle-based lattice mesher: optimizes particles carrying a Gaussian Hole Kernel until
+they form the chosen lattice aligned with the frame field (Alg. 1 and 2 of the paper, with
+coarse-to-fine), then connects them into a tetrahedral mesh. Each stage is also a free function
+(`optimize_particles_round()`, `delete_particles()`, `insert_particles()`,
+`tetrahedralize_particles()`); this class chains them.
+
+\tparam Traits a model of `LatticeMesherTraits_3`, e.g. `Lattice_mesher_traits_3<Epick>`
+\tparam MeshDomain a model of `LatticeMeshDomain_3`
+\tparam FrameField a model of `FrameField_3`
+*/
+template <typename Traits, typename MeshDomain, typename FrameField>
+class Lattice_particle_mesher_3
+{
+public:
+  typedef typename Traits::Point_3 Point_3;
+  typedef Lattice_mesher_3::Particle_set_3<Point_3> Particle_set;
+  typedef Lattice_mesher_3::Tetrahedral_mesh_3<Point_3> Mesh;
+  typedef Lattice_mesher_3::Lattice_mesher_parameters Parameters;
+
+  static_assert(Lattice_mesher_3::internal::Is_frame_field_3<FrameField, Traits>::value,
+                "FrameField must be a model of FrameField_3: Matrix_3 frame(const Point_3&) const");
+
+  Lattice_particle_mesher_3(const MeshDomain& domain, const FrameField& field, const Parameters& p)
+    : domain_(domain), field_(field), p_(p), lattice_(Lattice_mesher_3::make_lattice(p.lattice))
+  {
+    if(!(p.edge_length > 0.) || !std::isfinite(p.edge_length))
+      throw std::invalid_argument("Lattice_particle_mesher_3: the edge length must be positive and finite");
+    if(p.threads < 1) throw std::invalid_argument("Lattice_particle_mesher_3: the number of threads must be at least 1");
+    if(p.coarse_levels < 0 || p.coarse_levels > 4)
+      throw std::invalid_argument("Lattice_particle_mesher_3: coarse_levels must be in [0, 4]");
+    if(!(p.sigma_ratio > 0.)) throw std::invalid_argument("Lattice_particle_mesher_3: sigma_ratio must be positive");
+    lattice_.sigma_ratio = p.sigma_ratio;
+    const double iso_volume = isotropic_volume();
+    const double estimate = lattice_.density * iso_volume / std::pow(p.edge_length, 3);
+    if(!(estimate < max_particles))
+    {
+      std::ostringstream os;
+      os << "Lattice_particle_mesher_3: edge length " << p.edge_length << " would need about " << estimate
+         << " particles (more than " << max_particles << "); choose a larger edge length";
+      throw std::invalid_argument(os.str());
+    }
+  }
+
+  /// Runs the whole particle optimization: random start at the coarsest level, rounds of
+  /// L-BFGS with deletion and insertion, refinement to the next level, and a last tight round.
+  template <typename Visitor>
+  void optimize(Visitor& visitor)
+  {
+    using namespace Lattice_mesher_3;
+    const auto start = std::chrono::steady_clock::now();
+    auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    const int levels = p_.coarse_levels;
+    const int max_rounds = p_.max_rounds >= 0 ? p_.max_rounds : (levels > 0 ? 8 : 16);
+
+    for(int level = levels; level >= 0; --level) {
+      Optimization_options o = options(std::ldexp(p_.edge_length, level));
+      if(level == levels) random_start(o.edge_length);
+      else refine_particles(particles_, domain_, field_, lattice_, o);
+      auto report = [&](int round, const Optimization_result& r, std::size_t del, std::size_t ins, bool final_round) {
+        Round_report rep;
+        rep.level = level; rep.round = round; rep.final_round = final_round;
+        rep.particles = particles_.size(); rep.deleted = del; rep.inserted = ins;
+        rep.iterations = r.iterations; rep.energy = r.energy; rep.seconds = seconds();
+        visitor.round_done(rep);
+      };
+      o.max_iterations = 13;
+      report(0, optimize_particles_round(particles_, domain_, field_, lattice_, o), 0, 0, false);
+      for(int round = 1; round <= max_rounds; ++round) {
+        const std::size_t del = delete_particles(particles_, domain_, field_, lattice_, o);
+        const std::size_t ins = insert_particles(particles_, domain_, field_, lattice_, o);
+        if(del + ins == 0) break;
+        o.max_iterations = round < 5 ? 13 : 8;
+        report(round, optimize_particles_round(particles_, domain_, field_, lattice_, o), del, ins, false);
+      }
+    }
+    Optimization_options o = options(p_.edge_length);
+    o.max_iterations = 0;
+    o.gradient_tolerance = p_.final_gradient_tolerance;
+    const Optimization_result r = optimize_particles_round(particles_, domain_, field_, lattice_, o);
+    Round_report rep;
+    rep.final_round = true; rep.particles = particles_.size(); rep.iterations = r.iterations;
+    rep.energy = r.energy; rep.seconds = seconds();
+    visitor.round_done(rep);
+  }
+
+  void optimize() { Lattice_mesher_3::Null_lattice_mesher_visitor v; optimize(v); }
+
+  /// Connects the current particles into a tetrahedral mesh.
+  Mesh tetrahedralize() const
+  {
+    Lattice_mesher_3::Tetrahedralization_options o;
+    o.threads = p_.threads;
+    return Lattice_mesher_3::tetrahedralize_particles(particles_, domain_, o);
+  }
+
+  const Particle_set& particles() const { return particles_; }
+  Particle_set& particles() { return particles_; }
+  const Lattice_mesher_3::Lattice_3& lattice() const { return lattice_; }
+
+  /// Isotropic volume of the domain, the integral of |det B| over it (Monte Carlo for a
+  /// varying field, with a fixed seed).
+  double isotropic_volume() const
+  {
+    const Lattice_mesher_3::internal::Det_b_samples s = det_b_samples();
+    return domain_.volume() * s.mean;
+  }
+
+  /// Number of vertices expected at edge length `l`: the lattice density times the
+  /// isotropic volume, plus the boundary and feature layers (exact for a lattice-aligned cube).
+  double expected_vertices(double l) const
+  {
+    const double scale = std::cbrt(det_b_samples().mean);   // isotropic length per unit length
+    return lattice_.density * isotropic_volume() / (l * l * l)
+         + lattice_.area_factor * domain_.area() * scale * scale / (l * l)
+         + lattice_.length_factor * domain_.curves_length() * scale / l
+         + double(domain_.corners().size());
+  }
+
+  /// The edge length at which the mesh has about `n` vertices (solves expected_vertices(l) = n).
+  double edge_length_for_vertices(double n) const
+  {
+    if(!(n >= 4.)) throw std::invalid_argument("the target number of vertices must be at least 4");
+    double lo = 1e-12, hi = 1e12;
+    for(int it = 0; it < 200; ++it) {
+      const double mid = std::sqrt(lo * hi);
+      (expected_vertices(mid) > n ? lo : hi) = mid;
+    }
+    return std::sqrt(lo * hi);
+  }
+
+private:
+  static constexpr double max_particles = 5e7;
+
+  Lattice_mesher_3::Optimization_options options(double l) const
+  {
+    Lattice_mesher_3::Optimization_options o;
+    o.edge_length = l;
+    o.neighbor_radius = p_.neighbor_radius;
+    o.gradient_tolerance = p_.gradient_tolerance;
+    o.threads = p_.threads;
+    return o;
+  }
+
+  // Uniform random numbers in [0,1) from a fixed generator, identical on every platform.
+  struct Uniform
+  {
+    std::mt19937_64 g;
+    explicit Uniform(unsigned int seed) : g(seed) {}
+    double operator()() { return double(g() >> 11) * 0x1.0p-53; }
+  };
+
+  Lattice_mesher_3::internal::Det_b_samples det_b_samples() const
+  {
+    if(!samples_computed_) {
+      samples_ = Lattice_mesher_3::internal::sample_det_b(domain_, field_, 4096);
+      samples_computed_ = true;
+    }
+    return samples_;
+  }
+
+  // N = isotropic volume / l^3 x density particles, uniform in the isotropic space (rejection
+  // on |det B|), plus a fixed particle at every corner.
+  void random_start(double l)
+  {
+    using namespace Lattice_mesher_3;
+    particles_.clear();
+    for(std::size_t c = 0; c < domain_.corners().size(); ++c)
+      particles_.push_back(domain_.corners()[c], Particle_kind::FIXED, int(c));
+    const std::size_t n = std::size_t(std::llround(lattice_.density * isotropic_volume() / (l * l * l)));
+    const CGAL::Bbox_3 bb = domain_.bbox();
+    const double max_det = det_b_samples().max * 1.25;
+    Uniform u(p_.seed);
+    const std::size_t max_tries = 1000 * (n + 10);
+    for(std::size_t tries = 0; particles_.size() < n + domain_.corners().size() && tries < max_tries; ++tries) {
+      const Point_3 p(bb.xmin() + u() * (bb.xmax() - bb.xmin()), bb.ymin() + u() * (bb.ymax() - bb.ymin()),
+                      bb.zmin() + u() * (bb.zmax() - bb.zmin()));
+      const double accept = u();
+      if(!domain_.is_inside(p)) continue;
+      if(accept * max_det > std::abs(Lattice_mesher_3::internal::isotropic_map(field_.frame(p), p).determinant())) continue;
+      particles_.push_back(p, Particle_kind::FREE);
+    }
+    if(particles_.size() < 4)
+      throw std::invalid_argument("Lattice_particle_mesher_3: could not place particles inside the domain "
+                                  "(is it empty, or the edge length larger than the domain?)");
+  }
+
+  const MeshDomain& domain_;
+  const FrameField& field_;
+  Parameters p_;
+  Lattice_mesher_3::Lattice_3 lattice_;
+  Particle_set particles_;
+  mutable bool samples_computed_ = false;
+  mutable Lattice_mesher_3::internal::Det_b_samples samples_;
+};
+
+} // namespace CGAL
+
+#endif // CGAL_LATTICE_PARTICLE_MESHER_3_H

@@ -1,0 +1,188 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Lattice_mesher_3 developers
+
+#ifndef CGAL_LATTICE_MESH_3_H
+#define CGAL_LATTICE_MESH_3_H
+
+#include <CGAL/Named_function_parameters.h>
+#ifndef CGAL_LATTICE_MESHER_3_NP_HOOK
+#error "Lattice_mesher_3: the np_hook/ include directory must come before CGAL's (see CMakeLists.txt)"
+#endif
+
+#include <CGAL/Lattice_particle_mesher_3.h>
+#include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
+
+#include <functional>
+#include <stdexcept>
+#include <type_traits>
+
+namespace CGAL {
+
+namespace Lattice_mesher_3 {
+namespace internal {
+// Visitors come by value (copied into the parameter pack) or as std::ref(v).
+template <class T> T& unwrap(T& t) { return t; }
+template <class T> T& unwrap(std::reference_wrapper<T>& t) { return t.get(); }
+} // namespace internal
+} // namespace Lattice_mesher_3
+
+/*!
+\ingroup PkgLatticeMesher3Ref
+
+Meshes `domain` with tetrahedra whose vertices form a BCC or FCC lattice aligned with `field`:
+optimizes particles carrying a Gaussian Hole Kernel (`Lattice_particle_mesher_3`) and connects
+them (`tetrahedralize_particles()`).
+
+\tparam MeshDomain a model of `LatticeMeshDomain_3`
+\tparam FrameField a model of `FrameField_3`
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{edge_length}
+    \cgalParamDescription{the lattice cube edge l* in the isotropic space of the field}
+    \cgalParamType{double}
+    \cgalParamExtra{exactly one of `edge_length` and `number_of_vertices` is required}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_vertices}
+    \cgalParamDescription{picks l* so that the mesh has about this many vertices}
+    \cgalParamType{double}
+  \cgalParamNEnd
+  \cgalParamNBegin{lattice}
+    \cgalParamDescription{the lattice; `Lattice_type::GAUSSIAN` is the hole-less kernel of Particle2013}
+    \cgalParamType{`CGAL::Lattice_mesher_3::Lattice_type`}
+    \cgalParamDefault{`Lattice_type::BCC`}
+  \cgalParamNEnd
+  \cgalParamNBegin{random_seed}
+    \cgalParamDescription{seed of the random start: the same seed and number of threads give the same mesh}
+    \cgalParamType{unsigned int}
+    \cgalParamDefault{0}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{OpenMP threads}
+    \cgalParamType{int}
+    \cgalParamDefault{1}
+  \cgalParamNEnd
+  \cgalParamNBegin{max_rounds}
+    \cgalParamDescription{MaxRoundNum: rounds of deletion, insertion and optimization per level}
+    \cgalParamType{int}
+    \cgalParamDefault{16 without a coarse level, 8 with}
+  \cgalParamNEnd
+  \cgalParamNBegin{coarse_levels}
+    \cgalParamDescription{k: the optimization starts at 2^k l* and refines}
+    \cgalParamType{int}
+    \cgalParamDefault{1}
+  \cgalParamNEnd
+  \cgalParamNBegin{sigma_ratio}
+    \cgalParamDescription{sigma / l_closest of the kernel}
+    \cgalParamType{double}
+    \cgalParamDefault{0.3}
+  \cgalParamNEnd
+  \cgalParamNBegin{neighbor_radius_ratio}
+    \cgalParamDescription{R / l*: the isotropic radius within which particles interact}
+    \cgalParamType{double}
+    \cgalParamDefault{1.3}
+  \cgalParamNEnd
+  \cgalParamNBegin{gradient_tolerance}
+    \cgalParamDescription{EpsG: a round stops when the RMS particle gradient (units of 1/l*) is below it}
+    \cgalParamType{double}
+    \cgalParamDefault{0.01 (the last round: 1e-4)}
+  \cgalParamNEnd
+  \cgalParamNBegin{visitor}
+    \cgalParamDescription{progress: `round_done(const Lattice_mesher_3::Round_report&)` after each round;
+                          pass `std::ref(v)` to keep the state in `v`}
+    \cgalParamType{a model of `LatticeMesherVisitor_3`}
+    \cgalParamDefault{`Lattice_mesher_3::Null_lattice_mesher_visitor`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{the traits}
+    \cgalParamType{a model of `LatticeMesherTraits_3`}
+    \cgalParamDefault{`Lattice_mesher_traits_3<MeshDomain::Geom_traits>`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the mesh as vertex and tetrahedron arrays (`Lattice_mesher_3::Tetrahedral_mesh_3`).
+*/
+template <typename MeshDomain, typename FrameField,
+          typename NamedParameters = parameters::Default_named_parameters>
+Lattice_mesher_3::Tetrahedral_mesh_3<typename MeshDomain::Geom_traits::Point_3>
+lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
+               const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  namespace LM = Lattice_mesher_3;
+
+  static_assert(is_default_parameter<NamedParameters, internal_np::feature_angle_t>::value,
+                "lattice_mesh_3(domain, ...): feature_angle() applies when meshing a surface mesh; "
+                "a domain already has its features");
+  typedef typename internal_np::Lookup_named_param_def<
+    internal_np::geom_traits_t, NamedParameters,
+    Lattice_mesher_traits_3<typename MeshDomain::Geom_traits> >::type Traits;
+
+  LM::Lattice_mesher_parameters p;
+  p.lattice = choose_parameter(get_parameter(np, internal_np::lattice_param), LM::Lattice_type::BCC);
+  p.seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
+  p.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 1);
+  p.max_rounds = choose_parameter(get_parameter(np, internal_np::max_rounds), -1);
+  p.coarse_levels = choose_parameter(get_parameter(np, internal_np::coarse_levels), 1);
+  p.sigma_ratio = choose_parameter(get_parameter(np, internal_np::sigma_ratio), 0.3);
+  p.neighbor_radius = choose_parameter(get_parameter(np, internal_np::neighbor_radius_ratio), 1.3);
+  p.gradient_tolerance = choose_parameter(get_parameter(np, internal_np::gradient_tolerance), 1e-2);
+
+  const double edge_length = choose_parameter(get_parameter(np, internal_np::edge_length), 0.);
+  const double vertices = choose_parameter(get_parameter(np, internal_np::number_of_vertices), 0.);
+  const bool has_length = !is_default_parameter<NamedParameters, internal_np::edge_length_t>::value;
+  const bool has_count = !is_default_parameter<NamedParameters, internal_np::number_of_vertices_t>::value;
+  if(has_length == has_count)
+    throw std::invalid_argument("lattice_mesh_3(): give exactly one of edge_length() and number_of_vertices()");
+  if(has_length) {
+    if(!(edge_length > 0.) || !std::isfinite(edge_length))
+      throw std::invalid_argument("lattice_mesh_3(): edge_length() must be positive and finite");
+    p.edge_length = edge_length;
+  } else {
+    LM::Lattice_mesher_parameters probe = p;
+    probe.edge_length = 1.;
+    p.edge_length = Lattice_particle_mesher_3<Traits, MeshDomain, FrameField>(domain, field, probe)
+                      .edge_length_for_vertices(vertices);
+  }
+
+  typedef typename internal_np::Lookup_named_param_def<
+    internal_np::visitor_t, NamedParameters, LM::Null_lattice_mesher_visitor>::type Visitor;
+  Visitor visitor = choose_parameter<Visitor>(get_parameter(np, internal_np::visitor));
+
+  Lattice_particle_mesher_3<Traits, MeshDomain, FrameField> mesher(domain, field, p);
+  mesher.optimize(LM::internal::unwrap(visitor));
+  return mesher.tetrahedralize();
+}
+
+/*!
+\ingroup PkgLatticeMesher3Ref
+
+Meshes the volume bounded by the closed triangle mesh `surface`: builds a
+`Polyhedral_lattice_domain_3` whose sharp edges are those with a dihedral angle sharper than the
+named parameter `feature_angle` (degrees, default 60), then calls the domain overload with the
+other named parameters.
+*/
+template <typename Point_3, typename FrameField, typename NamedParameters = parameters::Default_named_parameters>
+Lattice_mesher_3::Tetrahedral_mesh_3<Point_3>
+lattice_mesh_3(const Surface_mesh<Point_3>& surface, const FrameField& field,
+               const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename Kernel_traits<Point_3>::Kernel K;
+  const double angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 60.);
+  const Lattice_mesher_3::Polyhedral_lattice_domain_3<K> domain(surface, angle);
+  // the angle is used up: hide it from the domain overload, which rejects it
+  return lattice_mesh_3(domain, field, np.feature_angle(internal_np::Param_not_found()));
+}
+
+} // namespace CGAL
+
+#endif // CGAL_LATTICE_MESH_3_H

@@ -1,0 +1,170 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The whole pipeline: lattice structure on the cube, validity of the output mesh, the named
+// parameters of lattice_mesh_3(), determinism, and clear errors for bad input.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/lattice_mesh_3.h>
+#include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
+#include <CGAL/Lattice_mesher_3/IO/medit.h>
+#include <CGAL/Lattice_mesher_3/check_mesh.h>
+#include <CGAL/Lattice_mesher_3/mesh_quality.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace {
+
+namespace LM = CGAL::Lattice_mesher_3;
+typedef CGAL::Epick K;
+typedef K::Point_3 Point_3;
+typedef CGAL::Lattice_mesher_traits_3<K> Traits;
+typedef LM::Polyhedral_lattice_domain_3<K> Domain;
+typedef LM::Constant_frame_field_3<Traits> Field;
+
+const Domain& cube()
+{
+  static const Domain d(LM::make_cube_surface_3<K>(0.1, 1.1));
+  return d;
+}
+
+// Fraction of the particles deeper than 1.5 l* whose every one-ring offset l* O_k is matched by a
+// particle within 0.1 l* (T = I, so offsets are axis-aligned).
+double lattice_fraction(const LM::Particle_set_3<Point_3>& ps, const LM::Lattice_3& lattice, double l)
+{
+  std::size_t deep = 0, perfect = 0;
+  for(std::size_t i = 0; i < ps.size(); ++i) {
+    const Point_3& p = ps.points[i];
+    if(std::sqrt(cube().project_on_surface(p).squared_distance) <= 1.5 * l || !cube().is_inside(p)) continue;
+    ++deep;
+    bool all = true;
+    for(const Eigen::Vector3d& o : lattice.one_ring) {
+      const Point_3 ideal(p.x() + l * o[0], p.y() + l * o[1], p.z() + l * o[2]);
+      bool found = false;
+      for(std::size_t j = 0; j < ps.size() && !found; ++j)
+        found = CGAL::squared_distance(ps.points[j], ideal) < 0.01 * l * l;
+      all = all && found;
+    }
+    perfect += all;
+  }
+  EXPECT_GT(deep, 100u);
+  return deep == 0 ? 0. : double(perfect) / double(deep);
+}
+
+class Cube_lattice : public ::testing::TestWithParam<LM::Lattice_type> {};
+
+TEST_P(Cube_lattice, InteriorFormsThePerfectLatticeAndTheMeshIsValid)
+{
+  LM::Lattice_mesher_parameters p;
+  p.lattice = GetParam();
+  p.edge_length = 1. / 8.;
+  p.threads = 2;
+  const Field field;
+  CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> mesher(cube(), field, p);
+  mesher.optimize();
+  EXPECT_GE(lattice_fraction(mesher.particles(), mesher.lattice(), p.edge_length), 0.95);
+
+  const LM::Tetrahedral_mesh_3<Point_3> mesh = mesher.tetrahedralize();
+  const LM::Mesh_validity_report r = LM::check_tetrahedral_mesh(mesh);
+  EXPECT_TRUE(r.valid()) << r.message;
+  EXPECT_EQ(r.unused_vertices, 0u);
+  // every input corner is a mesh vertex
+  for(const Point_3& c : cube().corners()) {
+    bool found = false;
+    for(const Point_3& q : mesh.points) found = found || q == c;
+    EXPECT_TRUE(found) << "corner " << c << " is missing";
+  }
+  // every tet is inside the domain
+  for(const auto& t : mesh.tets)
+    EXPECT_TRUE(cube().is_inside(CGAL::centroid(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], mesh.points[t[3]])));
+}
+
+INSTANTIATE_TEST_SUITE_P(Lattices, Cube_lattice, ::testing::Values(LM::Lattice_type::BCC, LM::Lattice_type::FCC));
+
+TEST(Lattice_mesh_3, NamedParametersAndDeterminism)
+{
+  const Field field;
+  const auto a = CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::number_of_vertices(1500)
+                                                       .lattice(LM::Lattice_type::FCC).random_seed(7u).number_of_threads(2));
+  const auto b = CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::random_seed(7u).number_of_vertices(1500)
+                                                       .number_of_threads(2).lattice(LM::Lattice_type::FCC));
+  EXPECT_TRUE(LM::check_tetrahedral_mesh(a).valid());
+  EXPECT_NEAR(double(a.points.size()), 1500., 300.);
+  ASSERT_EQ(a.points.size(), b.points.size());
+  ASSERT_EQ(a.tets, b.tets);
+  for(std::size_t i = 0; i < a.points.size(); ++i) EXPECT_EQ(a.points[i], b.points[i]);
+
+  const auto c = CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::number_of_vertices(1500)
+                                                       .lattice(LM::Lattice_type::FCC).random_seed(8u).number_of_threads(2));
+  EXPECT_NE(a.points, c.points);
+}
+
+TEST(Lattice_mesh_3, SurfaceMeshOverloadTakesTheFeatureAngle)
+{
+  const Field field;
+  const auto mesh = CGAL::lattice_mesh_3(LM::make_cube_surface_3<K>(0., 1.), field,
+                                         CGAL::parameters::edge_length(0.25).feature_angle(45.));
+  EXPECT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
+}
+
+template <typename F>
+void expect_error(F f, const std::string& needle)
+{
+  try { f(); ADD_FAILURE() << "no exception; expected one mentioning '" << needle << "'"; }
+  catch(const std::exception& e) { EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what(); }
+}
+
+TEST(Lattice_mesh_3, ClearErrors)
+{
+  const Field field;
+  expect_error([&] { CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(0.)); }, "edge_length");
+  expect_error([&] { CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(-0.1)); }, "edge_length");
+  expect_error([&] { CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(1e-5)); }, "larger edge length");
+
+  Traits::Matrix_3 singular;
+  singular << 1, 0, 0, 0, 1, 0, 1, 1, 0;
+  const Field bad(singular);
+  expect_error([&] { CGAL::lattice_mesh_3(cube(), bad, CGAL::parameters::edge_length(0.2)); }, "singular");
+
+  const std::string dir = ::testing::TempDir();
+  const std::string empty = dir + "/lattice_mesher_empty.off";
+  { std::ofstream os(empty); }
+  expect_error([&] { LM::read_polyhedral_lattice_domain_3<K>(empty); }, "empty");
+  const std::string open = dir + "/lattice_mesher_open.off";
+  { std::ofstream os(open); os << "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n"; }
+  expect_error([&] { LM::read_polyhedral_lattice_domain_3<K>(open); }, "border edges");
+}
+
+// The command-line program: a run that writes every output, and a clear error for bad input.
+TEST(Lattice_mesh_program, WritesOutputsAndRejectsBadInput)
+{
+  const std::string dir = ::testing::TempDir();
+  const std::string exe = LATTICE_MESH_EXECUTABLE;
+  const std::string out = dir + "/lm_cube.mesh", json = dir + "/lm_cube.json", vtu = dir + "/lm_cube.vtu";
+  ASSERT_EQ(std::system((exe + " --domain cube --edge-length 0.25 --quiet -o " + out + " --stats " + json +
+                         " --vtu " + vtu + " > " + dir + "/lm_log.txt").c_str()), 0);
+  std::ifstream js(json);
+  const std::string text((std::istreambuf_iterator<char>(js)), std::istreambuf_iterator<char>());
+  for(const char* key : { "\"vertices\"", "\"tets\"", "\"theta_min\"", "\"below40\"", "\"hausdorff\"", "\"seconds\"" })
+    EXPECT_NE(text.find(key), std::string::npos) << key;
+  LM::Tetrahedral_mesh_3<Point_3> mesh;
+  std::ifstream ms(out);
+  LM::read_medit(ms, mesh);
+  EXPECT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
+
+  EXPECT_NE(std::system((exe + " /nonexistent/file.off --vertices 100 -o " + out + " 2> " + dir + "/lm_err.txt").c_str()), 0);
+  EXPECT_NE(std::system((exe + " --domain cube --edge-length -1 -o " + out + " 2> " + dir + "/lm_err.txt").c_str()), 0);
+  std::ifstream es(dir + "/lm_err.txt");
+  const std::string err((std::istreambuf_iterator<char>(es)), std::istreambuf_iterator<char>());
+  EXPECT_NE(err.find("edge-length"), std::string::npos) << err;
+}
+
+} // namespace

@@ -1,0 +1,205 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// lattice-mesh: meshes a closed surface file or a built-in shape with a field-aligned BCC/FCC
+// lattice, prints progress and the quality table, and writes Medit, VTU and JSON statistics.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Lattice_particle_mesher_3.h>
+#include <CGAL/Lattice_mesher_3/IO/medit.h>
+#include <CGAL/Lattice_mesher_3/IO/vtu.h>
+#include <CGAL/Lattice_mesher_3/Implicit_lattice_domain_3.h>
+#include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
+#include <CGAL/Lattice_mesher_3/check_mesh.h>
+#include <CGAL/Lattice_mesher_3/mesh_quality.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+
+namespace LM = CGAL::Lattice_mesher_3;
+typedef CGAL::Epick K;
+typedef K::Point_3 Point_3;
+typedef CGAL::Lattice_mesher_traits_3<K> Traits;
+typedef Traits::Matrix_3 Matrix_3;
+typedef LM::Function_frame_field_3<Traits, std::function<Matrix_3(const Point_3&)> > Field;
+typedef LM::Polyhedral_lattice_domain_3<K> Surface_domain;
+typedef LM::Implicit_lattice_domain_3<K, std::function<double(const Point_3&)> > Implicit_domain;
+
+static const char* usage =
+  "usage: lattice-mesh [INPUT | --domain cube|sphere|torus] [--lattice bcc|fcc|gaussian]\n"
+  "                    [--edge-length L | --vertices N] [--field identity|rotation-y]\n"
+  "                    [--feature-angle DEG] [--seed S] [--threads N] [--coarse-levels K]\n"
+  "                    [--max-rounds R] [--quiet] -o OUT.mesh [--vtu OUT.vtu] [--stats OUT.json]\n"
+  "  INPUT            closed triangle surface (OFF, OBJ, STL, PLY)\n"
+  "  --domain         built-in shape: cube [0.1,1.1]^3, unit sphere, torus (axis y, radii 1 and 0.4)\n"
+  "  --lattice        bcc (default), fcc, or gaussian (hole-less kernel of Particle2013)\n"
+  "  --edge-length    lattice cube edge l* in the isotropic space of the field\n"
+  "  --vertices       pick l* so that the mesh has about N vertices\n"
+  "  --field          identity (default) or rotation-y (the paper's torus field Ry)\n"
+  "  --feature-angle  sharp-edge threshold in degrees (default 60)\n";
+
+struct Options
+{
+  std::string input, domain, lattice = "bcc", field = "identity", out, vtu, stats;
+  double edge_length = 0., vertices = 0., feature_angle = 60.;
+  unsigned int seed = 0;
+  int threads = 1, coarse_levels = 1, max_rounds = -1;
+  bool quiet = false;
+};
+
+static double to_number(const std::string& flag, const std::string& v)
+{
+  std::size_t used = 0;
+  double x = 0.;
+  try { x = std::stod(v, &used); } catch(const std::exception&) { used = 0; }
+  if(used != v.size() || !std::isfinite(x))
+    throw std::invalid_argument(flag + " expects a number, got '" + v + "'");
+  return x;
+}
+
+static Options parse(int argc, char** argv)
+{
+  Options o;
+  for(int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if(i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
+      return argv[++i];
+    };
+    if(a == "-h" || a == "--help") { std::cout << usage; std::exit(0); }
+    else if(a == "--domain") o.domain = value();
+    else if(a == "--lattice") o.lattice = value();
+    else if(a == "--edge-length") o.edge_length = to_number(a, value());
+    else if(a == "--vertices") o.vertices = to_number(a, value());
+    else if(a == "--field") o.field = value();
+    else if(a == "--feature-angle") o.feature_angle = to_number(a, value());
+    else if(a == "--seed") o.seed = (unsigned int)to_number(a, value());
+    else if(a == "--threads") o.threads = int(to_number(a, value()));
+    else if(a == "--coarse-levels") o.coarse_levels = int(to_number(a, value()));
+    else if(a == "--max-rounds") o.max_rounds = int(to_number(a, value()));
+    else if(a == "-o" || a == "--output") o.out = value();
+    else if(a == "--vtu") o.vtu = value();
+    else if(a == "--stats") o.stats = value();
+    else if(a == "--quiet") o.quiet = true;
+    else if(!a.empty() && a[0] == '-') throw std::invalid_argument("unknown option " + a);
+    else if(o.input.empty()) o.input = a;
+    else throw std::invalid_argument("more than one input file: '" + o.input + "' and '" + a + "'");
+  }
+  if(o.input.empty() == o.domain.empty())
+    throw std::invalid_argument("give either an input surface file or --domain cube|sphere|torus");
+  if(o.out.empty()) throw std::invalid_argument("an output file is required: -o OUT.mesh");
+  if((o.edge_length != 0.) == (o.vertices != 0.))
+    throw std::invalid_argument("give exactly one of --edge-length L and --vertices N");
+  if(o.edge_length != 0. && !(o.edge_length > 0.))
+    throw std::invalid_argument("--edge-length must be positive, got " + std::to_string(o.edge_length));
+  if(o.vertices != 0. && !(o.vertices >= 4.))
+    throw std::invalid_argument("--vertices must be at least 4");
+  if(o.threads < 1) throw std::invalid_argument("--threads must be at least 1");
+  LM::lattice_type_from_name(o.lattice);   // validates the name
+  return o;
+}
+
+static Field make_field(const std::string& name)
+{
+  if(name == "identity")
+    return Field([](const Point_3&) { return Matrix_3(Matrix_3::Identity()); });
+  if(name == "rotation-y") {
+    const LM::Rotation_y_frame_field_3<Traits> ry;
+    return Field([ry](const Point_3& p) { return ry.frame(p); });
+  }
+  throw std::invalid_argument("unknown field '" + name + "' (expected identity or rotation-y)");
+}
+
+struct Progress
+{
+  bool quiet;
+  void round_done(const LM::Round_report& r) const
+  {
+    if(quiet) return;
+    std::printf("  %-7s level %d round %2d: %8zu particles, energy %12.4f, -%zu +%zu, %3d iterations, %7.2f s\n",
+                r.final_round ? "[final]" : "", r.level, r.round, r.particles, r.energy, r.deleted, r.inserted,
+                r.iterations, r.seconds);
+    std::fflush(stdout);
+  }
+};
+
+template <typename Domain>
+static int run(const Domain& domain, const Field& field, const Options& o)
+{
+  typedef CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> Mesher;
+  LM::Lattice_mesher_parameters p;
+  p.lattice = LM::lattice_type_from_name(o.lattice);
+  p.seed = o.seed;
+  p.threads = o.threads;
+  p.coarse_levels = o.coarse_levels;
+  p.max_rounds = o.max_rounds;
+  p.edge_length = o.edge_length;
+  if(o.vertices > 0.) {
+    LM::Lattice_mesher_parameters probe = p;
+    probe.edge_length = 1.;
+    p.edge_length = Mesher(domain, field, probe).edge_length_for_vertices(o.vertices);
+  }
+  Mesher mesher(domain, field, p);
+  if(!o.quiet)
+    std::printf("lattice-mesh: %s lattice, l* = %.6g, about %.0f vertices expected, %d thread(s)\n",
+                o.lattice.c_str(), p.edge_length, mesher.expected_vertices(p.edge_length), o.threads);
+
+  const auto t0 = std::chrono::steady_clock::now();
+  Progress progress{o.quiet};
+  mesher.optimize(progress);
+  const auto t1 = std::chrono::steady_clock::now();
+  const LM::Tetrahedral_mesh_3<Point_3> mesh = mesher.tetrahedralize();
+  const auto t2 = std::chrono::steady_clock::now();
+
+  const LM::Mesh_validity_report validity = LM::check_tetrahedral_mesh(mesh);
+  LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, mesher.lattice());
+  q.hausdorff = LM::boundary_hausdorff_distance(mesh, domain, 0.25 * p.edge_length);
+  q.seconds.optimize = std::chrono::duration<double>(t1 - t0).count();
+  q.seconds.mesh = std::chrono::duration<double>(t2 - t1).count();
+  q.seconds.total = q.seconds.optimize + q.seconds.mesh;
+  LM::print_quality_table(std::cout, q);
+
+  auto open = [](const std::string& name) {
+    std::ofstream os(name);
+    if(!os) throw std::runtime_error("cannot write '" + name + "'");
+    return os;
+  };
+  { std::ofstream os = open(o.out); LM::write_medit(os, mesh); }
+  if(!o.vtu.empty()) { std::ofstream os = open(o.vtu); LM::write_vtu(os, mesh); }
+  if(!o.stats.empty()) { std::ofstream os = open(o.stats); LM::write_quality_json(os, q); }
+  if(!validity.valid()) {
+    std::cerr << "lattice-mesh: error: the output mesh is not valid:\n" << validity.message << "\n";
+    return 2;
+  }
+  return 0;
+}
+
+int main(int argc, char** argv)
+{
+  try {
+    const Options o = parse(argc, argv);
+    const Field field = make_field(o.field);
+    if(!o.input.empty())
+      return run(LM::read_polyhedral_lattice_domain_3<K>(o.input, o.feature_angle), field, o);
+    if(o.domain == "cube")
+      return run(Surface_domain(LM::make_cube_surface_3<K>(0.1, 1.1), o.feature_angle), field, o);
+    if(o.domain == "sphere")
+      return run(Implicit_domain(LM::Implicit_sphere_3<K>{Point_3(0., 0., 0.), 1.}, CGAL::Bbox_3(-1, -1, -1, 1, 1, 1)), field, o);
+    if(o.domain == "torus")
+      return run(Implicit_domain(LM::Implicit_torus_3<K>{1., .4}, CGAL::Bbox_3(-1.4, -.4, -1.4, 1.4, .4, 1.4)), field, o);
+    throw std::invalid_argument("unknown domain '" + o.domain + "' (expected cube, sphere or torus)");
+  } catch(const std::exception& e) {
+    std::cerr << "lattice-mesh: error: " << e.what() << "\n" << (argc <= 1 ? usage : "");
+    return 1;
+  }
+}
