@@ -53,7 +53,7 @@ struct Options
   std::string input, domain, lattice = "bcc", field = "identity", out, vtu, stats;
   double edge_length = 0., vertices = 0., feature_angle = 60.;
   unsigned int seed = 0;
-  int threads = 1, coarse_levels = 1, max_rounds = -1;
+  int threads = 1, coarse_levels = -1, max_rounds = -1;
   bool quiet = false;
 };
 
@@ -151,8 +151,8 @@ static int run(const Domain& domain, const Field& field, const Options& o)
   }
   Mesher mesher(domain, field, p);
   if(!o.quiet)
-    std::printf("lattice-mesh: %s lattice, l* = %.6g, about %.0f vertices expected, %d thread(s)\n",
-                o.lattice.c_str(), p.edge_length, mesher.expected_vertices(p.edge_length), o.threads);
+    std::printf("lattice-mesh: %s lattice, l* = %.6g, about %.0f vertices expected, %d coarse level(s), %d thread(s)\n",
+                o.lattice.c_str(), p.edge_length, mesher.expected_vertices(p.edge_length), mesher.coarse_levels(), o.threads);
 
   const auto t0 = std::chrono::steady_clock::now();
   Progress progress{o.quiet};

@@ -56,7 +56,7 @@ struct Lattice_mesher_parameters
   unsigned int seed = 0;               ///< random start; same seed and threads give the same mesh
   int threads = 1;
   int max_rounds = -1;                 ///< MaxRoundNum; -1: 16 without a coarse level, 8 with
-  int coarse_levels = 1;               ///< k: start at 2^k l*
+  int coarse_levels = -1;              ///< k: start at 2^k l*; -1: the coarsest level with >= 16 vertices
   double sigma_ratio = 0.3;            ///< sigma / l_closest
   double neighbor_radius = 1.3;        ///< R / l*
   double gradient_tolerance = 1e-2;    ///< EpsG of the rounds
@@ -96,8 +96,8 @@ public:
     if(!(p.edge_length > 0.) || !std::isfinite(p.edge_length))
       throw std::invalid_argument("Lattice_particle_mesher_3: the edge length must be positive and finite");
     if(p.threads < 1) throw std::invalid_argument("Lattice_particle_mesher_3: the number of threads must be at least 1");
-    if(p.coarse_levels < 0 || p.coarse_levels > 4)
-      throw std::invalid_argument("Lattice_particle_mesher_3: coarse_levels must be in [0, 4]");
+    if(p.coarse_levels < -1 || p.coarse_levels > max_coarse_levels)
+      throw std::invalid_argument("Lattice_particle_mesher_3: coarse_levels must be -1 (automatic) or in [0, 4]");
     if(!(p.sigma_ratio > 0.)) throw std::invalid_argument("Lattice_particle_mesher_3: sigma_ratio must be positive");
     lattice_.sigma_ratio = p.sigma_ratio;
     const double iso_volume = isotropic_volume();
@@ -119,7 +119,7 @@ public:
     using namespace Lattice_mesher_3;
     const auto start = std::chrono::steady_clock::now();
     auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-    const int levels = p_.coarse_levels;
+    const int levels = coarse_levels();
     const int max_rounds = p_.max_rounds >= 0 ? p_.max_rounds : (levels > 0 ? 8 : 16);
 
     for(int level = levels; level >= 0; --level) {
@@ -198,8 +198,20 @@ public:
     return std::sqrt(lo * hi);
   }
 
+  /// The number k of coarse levels: as given, or the largest k <= 4 at which the coarse lattice
+  /// still has 16 vertices. Few particles at the start form one lattice grain instead of many
+  /// with mismatched offsets, which refinement then propagates to the final edge length.
+  int coarse_levels() const
+  {
+    if(p_.coarse_levels >= 0) return p_.coarse_levels;
+    int k = 0;
+    while(k < max_coarse_levels && expected_vertices(std::ldexp(p_.edge_length, k + 1)) >= 16.) ++k;
+    return k;
+  }
+
 private:
   static constexpr double max_particles = 5e7;
+  static constexpr int max_coarse_levels = 4;
 
   Lattice_mesher_3::Optimization_options options(double l) const
   {

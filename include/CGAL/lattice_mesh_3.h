@@ -75,7 +75,7 @@ them (`tetrahedralize_particles()`).
   \cgalParamNBegin{coarse_levels}
     \cgalParamDescription{k: the optimization starts at 2^k l* and refines}
     \cgalParamType{int}
-    \cgalParamDefault{1}
+    \cgalParamDefault{-1: the largest k <= 4 at which the coarse lattice has at least 16 vertices}
   \cgalParamNEnd
   \cgalParamNBegin{sigma_ratio}
     \cgalParamDescription{sigma / l_closest of the kernel}
@@ -130,7 +130,7 @@ lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
   p.seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
   p.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 1);
   p.max_rounds = choose_parameter(get_parameter(np, internal_np::max_rounds), -1);
-  p.coarse_levels = choose_parameter(get_parameter(np, internal_np::coarse_levels), 1);
+  p.coarse_levels = choose_parameter(get_parameter(np, internal_np::coarse_levels), -1);
   p.sigma_ratio = choose_parameter(get_parameter(np, internal_np::sigma_ratio), 0.3);
   p.neighbor_radius = choose_parameter(get_parameter(np, internal_np::neighbor_radius_ratio), 1.3);
   p.gradient_tolerance = choose_parameter(get_parameter(np, internal_np::gradient_tolerance), 1e-2);

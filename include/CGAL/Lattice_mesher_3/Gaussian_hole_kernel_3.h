@@ -14,6 +14,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -46,7 +47,7 @@ public:
     : holes_(lattice.holes),
       hole_weight_(lattice.holes.empty() ? 0. : 1. / double(lattice.holes.size())),
       sigma_(lattice.sigma()),
-      support_radius_(lattice.ring_radius() + cutoff_sigmas * lattice.sigma())
+      support_radius_(hole_radius(lattice.holes) + cutoff_sigmas * lattice.sigma())
   {
     inv_two_sigma2_ = 1. / (2. * sigma_ * sigma_);
     inv_sigma2_ = 1. / (sigma_ * sigma_);
@@ -81,6 +82,13 @@ public:
 
 private:
   static constexpr double cutoff_sigmas = 4.;
+
+  static double hole_radius(const std::vector<Vector>& holes)
+  {
+    double r = 0.;
+    for(const Vector& h : holes) r = (std::max)(r, h.norm());
+    return r;
+  }
 
   double gaussian(const Vector& d) const
   {

@@ -114,8 +114,8 @@ struct Is_frame_field_3<Field, GT, std::void_t<decltype(
 constexpr double max_frame_condition_number = 1e8;
 
 // B = T^-1, or std::domain_error naming the point when T is singular or not finite.
-// Called for every particle pair in every round, so the condition number is estimated by
-// ||T||_F ||T^-1||_F (within a factor 3 of the 2-norm one) instead of an SVD.
+// Called for every particle pair in every round, so the condition number is bounded by
+// ||T||_F ||T^-1||_F (at most 3 times the 2-norm one) instead of computed by an SVD.
 template <typename Point_3>
 Eigen::Matrix3d isotropic_map(const Eigen::Matrix3d& t, const Point_3& where)
 {
@@ -128,9 +128,9 @@ Eigen::Matrix3d isotropic_map(const Eigen::Matrix3d& t, const Point_3& where)
   const double det = t.determinant();
   const Eigen::Matrix3d b = t.inverse();
   const double condition = t.norm() * b.norm();
-  if(!(det != 0.) || !b.allFinite() || !(condition < 3. * max_frame_condition_number)) {
+  if(!(det != 0.) || !b.allFinite() || !(condition < max_frame_condition_number)) {
     std::ostringstream os;
-    os << "singular (condition number " << (b.allFinite() ? condition / 3. : HUGE_VAL) << ")";
+    os << "singular (condition number about " << (b.allFinite() ? condition : HUGE_VAL) << ")";
     fail(os.str());
   }
   return b;
