@@ -39,14 +39,18 @@ static const char* usage =
   "usage: lattice-mesh [INPUT | --domain cube|sphere|torus] [--lattice bcc|fcc|gaussian]\n"
   "                    [--edge-length L | --vertices N] [--field identity|rotation-y]\n"
   "                    [--feature-angle DEG] [--seed S] [--threads N] [--coarse-levels K]\n"
-  "                    [--max-rounds R] [--quiet] -o OUT.mesh [--vtu OUT.vtu] [--stats OUT.json]\n"
+  "                    [--max-rounds R] [--no-flips] [--smoothing-rounds N] [--quiet]\n"
+  "                    -o OUT.mesh [--vtu OUT.vtu] [--stats OUT.json]\n"
   "  INPUT            closed triangle surface (OFF, OBJ, STL, PLY)\n"
   "  --domain         built-in shape: cube [0.1,1.1]^3, unit sphere, torus (axis y, radii 1 and 0.4)\n"
   "  --lattice        bcc (default), fcc, or gaussian (hole-less kernel of Particle2013)\n"
   "  --edge-length    lattice cube edge l* in the isotropic space of the field\n"
   "  --vertices       pick l* so that the mesh has about N vertices\n"
   "  --field          identity (default) or rotation-y (the paper's torus field Ry)\n"
-  "  --feature-angle  sharp-edge threshold in degrees (default 60)\n";
+  "  --feature-angle  sharp-edge threshold in degrees (default 60)\n"
+  "  --no-flips, --smoothing-rounds N\n"
+  "                   connectivity flips and rounds of worst-element smoothing after the\n"
+  "                   tetrahedralization (default: flips on, 2 rounds; 0 keeps the particle positions)\n";
 
 struct Options
 {
@@ -54,7 +58,8 @@ struct Options
   double edge_length = 0., vertices = 0., feature_angle = 60.;
   unsigned int seed = 0;
   int threads = 1, coarse_levels = -1, max_rounds = -1;
-  bool quiet = false;
+  bool quiet = false, flip = true;
+  int smoothing_rounds = 2;
 };
 
 static double to_number(const std::string& flag, const std::string& v)
@@ -91,6 +96,8 @@ static Options parse(int argc, char** argv)
     else if(a == "--vtu") o.vtu = value();
     else if(a == "--stats") o.stats = value();
     else if(a == "--quiet") o.quiet = true;
+    else if(a == "--no-flips") o.flip = false;
+    else if(a == "--smoothing-rounds") o.smoothing_rounds = int(to_number(a, value()));
     else if(!a.empty() && a[0] == '-') throw std::invalid_argument("unknown option " + a);
     else if(o.input.empty()) o.input = a;
     else throw std::invalid_argument("more than one input file: '" + o.input + "' and '" + a + "'");
@@ -143,6 +150,8 @@ static int run(const Domain& domain, const Field& field, const Options& o)
   p.threads = o.threads;
   p.coarse_levels = o.coarse_levels;
   p.max_rounds = o.max_rounds;
+  p.flip = o.flip;
+  p.smoothing_rounds = o.smoothing_rounds;
   p.edge_length = o.edge_length;
   if(o.vertices > 0.) {
     LM::Lattice_mesher_parameters probe = p;

@@ -16,6 +16,8 @@
 #include <CGAL/Lattice_mesher_3/frame_fields.h>
 #include <CGAL/Lattice_mesher_3/insert_delete_particles.h>
 #include <CGAL/Lattice_mesher_3/optimize_particles.h>
+#include <CGAL/Lattice_mesher_3/flip_tetrahedra.h>
+#include <CGAL/Lattice_mesher_3/smooth_vertices.h>
 #include <CGAL/Lattice_mesher_3/tetrahedralize_particles.h>
 #include <CGAL/Lattice_mesher_3/internal/field_sampling.h>
 
@@ -61,6 +63,8 @@ struct Lattice_mesher_parameters
   double neighbor_radius = 1.3;        ///< R / l*
   double gradient_tolerance = 1e-2;    ///< EpsG of the rounds
   double final_gradient_tolerance = 1e-4; ///< EpsG of the last round
+  bool flip = true;                    ///< improve the connectivity by flips (`flip_tetrahedra()`)
+  int smoothing_rounds = 2;            ///< rounds of `smooth_vertices()` and flips on the worst tetrahedra
 };
 
 } // namespace Lattice_mesher_3
@@ -134,13 +138,19 @@ public:
         visitor.round_done(rep);
       };
       o.max_iterations = 13;
-      report(0, optimize_particles_round(particles_, domain_, field_, lattice_, o), 0, 0, false);
+      Optimization_result r = optimize_particles_round(particles_, domain_, field_, lattice_, o);
+      report(0, r, 0, 0, false);
       for(int round = 1; round <= max_rounds; ++round) {
         const std::size_t del = delete_particles(particles_, domain_, field_, lattice_, o);
         const std::size_t ins = insert_particles(particles_, domain_, field_, lattice_, o);
         if(del + ins == 0) break;
         o.max_iterations = round < 5 ? 13 : 8;
-        report(round, optimize_particles_round(particles_, domain_, field_, lattice_, o), del, ins, false);
+        const double previous = r.energy;
+        r = optimize_particles_round(particles_, domain_, field_, lattice_, o);
+        report(round, r, del, ins, false);
+        // Near a boundary that cuts the lattice obliquely, a few particles may be deleted and
+        // re-inserted forever; once a round no longer lowers the energy, more rounds only churn.
+        if(round >= 4 && r.energy > previous - 1e-4 * std::abs(previous)) break;
       }
     }
     Optimization_options o = options(p_.edge_length);
@@ -155,12 +165,21 @@ public:
 
   void optimize() { Lattice_mesher_3::Null_lattice_mesher_visitor v; optimize(v); }
 
-  /// Connects the current particles into a tetrahedral mesh.
+  /// Connects the current particles into a tetrahedral mesh, then improves its worst tetrahedra
+  /// (`flip_tetrahedra()`, `smooth_vertices()`), as the parameters say.
   Mesh tetrahedralize() const
   {
     Lattice_mesher_3::Tetrahedralization_options o;
     o.threads = p_.threads;
-    return Lattice_mesher_3::tetrahedralize_particles(particles_, domain_, o);
+    Mesh mesh = Lattice_mesher_3::tetrahedralize_particles(particles_, domain_, o);
+    if(p_.flip) Lattice_mesher_3::flip_tetrahedra(mesh, field_);
+    Lattice_mesher_3::Smoothing_options so;
+    so.threads = p_.threads;
+    for(int round = 0; round < p_.smoothing_rounds; ++round) {
+      if(Lattice_mesher_3::smooth_vertices(mesh, domain_, field_, so) == 0) break;
+      if(p_.flip) Lattice_mesher_3::flip_tetrahedra(mesh, field_);
+    }
+    return mesh;
   }
 
   const Particle_set& particles() const { return particles_; }

@@ -111,22 +111,44 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
   struct Candidate { Point_3 p; Particle_kind kind; int feature; double energy; Mat3 B; bool keep; };
   const std::size_t m = offsets.size();
   std::vector<Candidate> cand(n * m);
+  const double block = (std::max)(min_distance, coincidence);
+  double offset_radius = 0.;
+  for(const Eigen::Vector3d& off : offsets) offset_radius = (std::max)(offset_radius, off.norm());
+  // Distance of each particle to the boundary: a candidate closer to its particle than that is
+  // inside without an inside test (the ball around an inside point up to the surface is inside).
+  std::vector<double> clearance(n, 0.);
+#pragma omp parallel for num_threads(o.threads) schedule(static)
+  for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i)
+    if(ps.kinds[i] == Particle_kind::FREE && domain.is_inside(ps.points[i]))
+      clearance[i] = std::sqrt(domain.project_on_surface(ps.points[i]).squared_distance);
   bool failed = false;
   std::string what;
 #pragma omp parallel num_threads(o.threads)
   {
-    std::vector<std::size_t> near;
-#pragma omp for schedule(dynamic, 64)
+    std::vector<std::size_t> near, around;
+    std::ptrdiff_t around_of = -1;
+#pragma omp for schedule(static)
     for(std::ptrdiff_t c = 0; c < std::ptrdiff_t(n * m); ++c) {
       Candidate& cd = cand[c];
       cd.keep = false;
       try {
         const std::size_t i = std::size_t(c) / m, k = std::size_t(c) % m;
         Vec3 q = x[i] + l * (frames.T[i] * offsets[k]);
+        // Most candidates fall on a particle (the lattice around i is already there): drop them
+        // with i's neighbours, one search per particle, before any per-candidate search.
+        if(around_of != std::ptrdiff_t(i)) {
+          around.clear();
+          search.in_sphere(ps.points[i], reach * (offset_radius * l + block), around);
+          around_of = std::ptrdiff_t(i);
+        }
+        bool occupied = false;
+        for(std::size_t j : around) occupied = occupied || (frames.B[i] * (q - x[j])).norm() < block;
         Point_3 p(q[0], q[1], q[2]);
+        const bool inside = (q - x[i]).norm() < clearance[i] || domain.is_inside(p);
+        if(occupied && inside) continue;
         cd.kind = Particle_kind::FREE;
         cd.feature = -1;
-        if(!domain.is_inside(p)) {
+        if(!inside) {
           p = domain.project_on_surface(p).point;
           cd.kind = Particle_kind::BOUNDARY;
           if(has_features) {
@@ -149,7 +171,7 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
         bool blocked = false;
         for(std::size_t j : near) {
           const Vec3 v = cd.B * (q - x[j]);
-          if(v.norm() < (std::max)(min_distance, coincidence)) { blocked = true; break; }
+          if(v.norm() < block) { blocked = true; break; }
           e += kernel.energy(v / l);
         }
         cd.energy = e;

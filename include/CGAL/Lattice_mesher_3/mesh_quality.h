@@ -31,6 +31,7 @@
 #include <iterator>
 #include <ostream>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -164,6 +165,29 @@ Eigen::Matrix3d isotropic_map_at(const FrameField& field, const Eigen::Vector3d&
 
 /*!
 \ingroup PkgLatticeMesher3Quality
+Smallest and largest interior dihedral angle (degrees) of the tetrahedron (a, b, c, d), whatever
+its orientation.
+*/
+inline std::pair<double, double> dihedral_angle_range(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                                      const Eigen::Vector3d& c, const Eigen::Vector3d& d)
+{
+  // Area vectors of the faces opposite a, b, c, d, all outward for a positive tetrahedron
+  // and all inward for a negative one: the dihedral angles are the same either way.
+  const std::array<Eigen::Vector3d, 4> n = { (c - b).cross(d - b), (d - a).cross(c - a),
+                                             (b - a).cross(d - a), (c - a).cross(b - a) };
+  std::pair<double, double> range(180., 0.);
+  // the faces i and j meet at the edge opposite both; its interior angle is pi - angle(n_i, n_j)
+  for(int i = 0; i < 4; ++i)
+    for(int j = i + 1; j < 4; ++j) {
+      const double theta = internal::angle_degrees(n[i], -n[j]);
+      range.first = (std::min)(range.first, theta);
+      range.second = (std::max)(range.second, theta);
+    }
+  return range;
+}
+
+/*!
+\ingroup PkgLatticeMesher3Quality
 Quality of the tetrahedron (a, b, c, d), given in the space where it is measured (the isotropic
 space). The result does not depend on the orientation of the tetrahedron; a degenerate one has
 `rho` = `kappa` = 0.
@@ -171,23 +195,11 @@ space). The result does not depend on the orientation of the tetrahedron; a dege
 inline Tetrahedron_quality_3 tetrahedron_quality(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                                  const Eigen::Vector3d& c, const Eigen::Vector3d& d)
 {
-  // Area vectors of the faces opposite a, b, c, d, all outward for a positive tetrahedron
-  // and all inward for a negative one: the dihedral angles are the same either way.
-  const std::array<Eigen::Vector3d, 4> n = { (c - b).cross(d - b), (d - a).cross(c - a),
-                                             (b - a).cross(d - a), (c - a).cross(b - a) };
   Tetrahedron_quality_3 q;
-  q.theta_min = 180.;
-  q.theta_max = 0.;
+  std::tie(q.theta_min, q.theta_max) = dihedral_angle_range(a, b, c, d);
   double squared_areas = 0.;
-  for(int i = 0; i < 4; ++i) {
-    squared_areas += .25 * n[i].squaredNorm();
-    // the faces i and j meet at the edge opposite both; its interior angle is pi - angle(n_i, n_j)
-    for(int j = i + 1; j < 4; ++j) {
-      const double theta = internal::angle_degrees(n[i], -n[j]);
-      q.theta_min = (std::min)(q.theta_min, theta);
-      q.theta_max = (std::max)(q.theta_max, theta);
-    }
-  }
+  for(const Eigen::Vector3d& n : { (c - b).cross(d - b), (d - a).cross(c - a), (b - a).cross(d - a), (c - a).cross(b - a) })
+    squared_areas += .25 * n.squaredNorm();
 
   const Eigen::Vector3d u = b - a, v = c - a, w = d - a;
   const std::array<Eigen::Vector3d, 6> edges = { u, v, w, c - b, d - b, d - c };

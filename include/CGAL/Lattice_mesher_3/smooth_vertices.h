@@ -1,0 +1,162 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Lattice_mesher_3 developers
+
+#ifndef CGAL_LATTICE_MESHER_3_SMOOTH_VERTICES_H
+#define CGAL_LATTICE_MESHER_3_SMOOTH_VERTICES_H
+
+#include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
+#include <CGAL/Lattice_mesher_3/mesh_quality.h>
+
+#include <CGAL/enum.h>
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+namespace CGAL {
+namespace Lattice_mesher_3 {
+
+/// Settings of `smooth_vertices()`.
+struct Smoothing_options
+{
+  /// Vertices of tetrahedra whose smallest dihedral angle (isotropic space, degrees) is below
+  /// this are moved; the others, the lattice, stay where the optimization put them.
+  double select_angle = 55.;
+  /// Moves first raise the smallest angle of a star up to this, then the sum of its angles.
+  double target_angle = 40.;
+  int max_passes = 4;
+  int threads = 1;
+};
+
+/*!
+\ingroup PkgLatticeMesher3Flips
+
+Moves the vertices of the worst tetrahedra to raise the smallest dihedral angle of their star
+(measured in the isotropic space of `field`): a pattern search over the axis directions and the
+direction to the star's centroid, with steps of 30%, 10% and 3% of the star's mean edge length.
+Free vertices move freely, boundary vertices stay on the surface and sharp-edge vertices on the
+feature curves (each candidate is projected back), fixed vertices (corners) do not move. A move is
+kept only if no tetrahedron of the star is inverted (exact orientation tests) and the star's
+smallest angle rises, so the boundary stays on the surface and the mesh stays valid. Needs
+`mesh.vertex_kinds`. Returns the number of moves.
+*/
+template <typename Point_3, typename Domain, typename FrameField>
+std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain, const FrameField& field,
+                            const Smoothing_options& o = Smoothing_options())
+{
+  if(mesh.vertex_kinds.size() != mesh.points.size())
+    throw std::invalid_argument("smooth_vertices(): the mesh needs one particle kind per vertex");
+  std::vector<std::vector<int> > star(mesh.points.size());
+  for(std::size_t t = 0; t < mesh.tets.size(); ++t)
+    for(int v : mesh.tets[t]) star[v].push_back(int(t));
+
+  // B of each tetrahedron at its centroid, frozen for a pass: the moves are small against the
+  // scale on which the field varies, and the field is not evaluated in the inner loop
+  std::vector<Eigen::Matrix3d> maps(mesh.tets.size());
+  auto tet_quality = [&](std::size_t t, int moved, const Point_3& at) {
+    std::array<Eigen::Vector3d, 4> p;
+    for(int i = 0; i < 4; ++i) p[i] = maps[t] * internal::to_eigen(mesh.tets[t][i] == moved ? at : mesh.points[mesh.tets[t][i]]);
+    return dihedral_angle_range(p[0], p[1], p[2], p[3]).first;
+  };
+  // The star of v with v at `at`, scored by (its smallest angle capped at the target, the sum of
+  // its smallest angles), compared lexicographically: bad stars are made better first, then the
+  // mean angle is raised, and a star never drops below the target once it is above it. The cap
+  // keeps good lattice tetrahedra from being traded away for tiny gains of the worst one.
+  struct Score { double worst, sum; bool better(const Score& s) const { return worst > s.worst + 1e-3 || (worst >= s.worst && sum > s.sum + 1e-3); } };
+  auto star_quality = [&](int v, const Point_3& at) {
+    Score s{ o.target_angle, 0. };
+    for(int t : star[v]) {
+      const std::array<int, 4>& tv = mesh.tets[t];
+      std::array<Point_3, 4> p;
+      for(int i = 0; i < 4; ++i) p[i] = tv[i] == v ? at : mesh.points[tv[i]];
+      if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) return Score{ -1., 0. };
+      const double q = tet_quality(std::size_t(t), v, at);
+      s.worst = (std::min)(s.worst, q);
+      s.sum += q;
+    }
+    return s;
+  };
+  auto constrain = [&](int v, const Point_3& p) {
+    switch(mesh.vertex_kinds[v]) {
+      case Particle_kind::BOUNDARY: return domain.project_on_surface(p).point;
+      case Particle_kind::SHARP_EDGE: return domain.project_on_features(p).point;
+      default: return p;
+    }
+  };
+
+  // pattern search for vertex v; returns the number of accepted moves
+  auto move_vertex = [&](int v) -> std::size_t {
+    const Eigen::Vector3d x = internal::to_eigen(mesh.points[v]);
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    double mean_edge = 0.;
+    int count = 0;
+    for(int t : star[v])
+      for(int w : mesh.tets[t])
+        if(w != v) { const Eigen::Vector3d y = internal::to_eigen(mesh.points[w]); centroid += y; mean_edge += (y - x).norm(); ++count; }
+    centroid /= count;
+    mean_edge /= count;
+    const std::array<Eigen::Vector3d, 7> directions = { Eigen::Vector3d::UnitX(), -Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
+                                                        -Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ(), -Eigen::Vector3d::UnitZ(),
+                                                        (centroid - x).normalized() };
+    Score best = star_quality(v, mesh.points[v]);
+    std::size_t accepted = 0;
+    for(double step : { .3, .1, .03 })
+      for(int repeat = 0, improved = 1; improved && repeat < 4; ++repeat) {
+        improved = 0;
+        for(const Eigen::Vector3d& d : directions) {
+          const Eigen::Vector3d y = internal::to_eigen(mesh.points[v]) + step * mean_edge * d;
+          const Point_3 candidate = constrain(v, Point_3(y[0], y[1], y[2]));
+          const Score q = star_quality(v, candidate);
+          if(q.better(best)) { best = q; mesh.points[v] = candidate; improved = 1; ++accepted; }
+        }
+      }
+    return accepted;
+  };
+
+  std::size_t moves = 0;
+  for(int pass = 0; pass < o.max_passes; ++pass) {
+    for(std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      Eigen::Vector3d c = Eigen::Vector3d::Zero();
+      for(int v : mesh.tets[t]) c += .25 * internal::to_eigen(mesh.points[v]);
+      maps[t] = internal::isotropic_map_at<Point_3>(field, c);
+    }
+    std::vector<char> selected(mesh.points.size(), 0);
+    for(std::size_t t = 0; t < mesh.tets.size(); ++t)
+      if(tet_quality(t, -1, mesh.points[0]) < o.select_angle)
+        for(int v : mesh.tets[t]) selected[v] = mesh.vertex_kinds[v] != Particle_kind::FIXED;
+    // Greedy colouring: vertices of one colour share no tetrahedron, so their stars are moved in
+    // parallel with the same result for any number of threads.
+    std::vector<int> colour(mesh.points.size(), -1);
+    std::vector<std::vector<int> > classes;
+    std::vector<char> taken;
+    for(std::size_t v = 0; v < mesh.points.size(); ++v) {
+      if(!selected[v]) continue;
+      taken.assign(classes.size() + 1, 0);
+      for(int t : star[v]) for(int w : mesh.tets[t]) if(colour[w] >= 0) taken[colour[w]] = 1;
+      const int c = int(std::find(taken.begin(), taken.end(), 0) - taken.begin());
+      if(c == int(classes.size())) classes.emplace_back();
+      colour[v] = c;
+      classes[c].push_back(int(v));
+    }
+    std::size_t pass_moves = 0;
+    for(const std::vector<int>& members : classes) {
+#pragma omp parallel for num_threads(o.threads) schedule(dynamic, 16) reduction(+:pass_moves)
+      for(std::ptrdiff_t k = 0; k < std::ptrdiff_t(members.size()); ++k)
+        pass_moves += move_vertex(members[k]);
+    }
+    moves += pass_moves;
+    if(pass_moves == 0) break;
+  }
+  return moves;
+}
+
+} // namespace Lattice_mesher_3
+} // namespace CGAL
+
+#endif // CGAL_LATTICE_MESHER_3_SMOOTH_VERTICES_H
