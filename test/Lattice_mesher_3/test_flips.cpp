@@ -1,0 +1,124 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Mesh improvement: flips and worst-element smoothing keep the mesh valid, keep the boundary,
+// and never lower the smallest dihedral angle.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
+#include <CGAL/Lattice_mesher_3/check_mesh.h>
+#include <CGAL/Lattice_mesher_3/flip_tetrahedra.h>
+#include <CGAL/Lattice_mesher_3/smooth_vertices.h>
+#include <CGAL/Lattice_mesher_3/tetrahedralize_particles.h>
+#include <CGAL/Lattice_mesher_traits_3.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+
+namespace {
+
+namespace LM = CGAL::Lattice_mesher_3;
+typedef CGAL::Epick K;
+typedef K::Point_3 Point_3;
+typedef CGAL::Lattice_mesher_traits_3<K> Traits;
+typedef LM::Polyhedral_lattice_domain_3<K> Domain;
+
+const Domain& unit_cube()
+{
+  static const Domain d(LM::make_cube_surface_3<K>(0., 1.));
+  return d;
+}
+
+// A jittered grid: corners fixed, faces and edges on the surface, the rest free. Its Delaunay
+// mesh has many poor tetrahedra for the improvement stages to work on.
+LM::Tetrahedral_mesh_3<Point_3> jittered_mesh(unsigned int seed)
+{
+  std::mt19937 g(seed);
+  std::uniform_real_distribution<double> jitter(-0.12, 0.12);
+  LM::Particle_set_3<Point_3> ps;
+  const int n = 6;
+  for(int i = 0; i <= n; ++i) for(int j = 0; j <= n; ++j) for(int k = 0; k <= n; ++k) {
+    const int on = (i == 0 || i == n) + (j == 0 || j == n) + (k == 0 || k == n);
+    auto c = [&](int a, bool fixed) { return fixed ? double(a) / n : (a + jitter(g)) / n; };
+    const Point_3 p(c(i, i == 0 || i == n), c(j, j == 0 || j == n), c(k, k == 0 || k == n));
+    ps.push_back(p, on == 3 ? LM::Particle_kind::FIXED : on == 2 ? LM::Particle_kind::SHARP_EDGE
+                   : on == 1 ? LM::Particle_kind::BOUNDARY : LM::Particle_kind::FREE);
+  }
+  return LM::tetrahedralize_particles(ps, unit_cube());
+}
+
+double worst_angle(const LM::Tetrahedral_mesh_3<Point_3>& mesh, const LM::Constant_frame_field_3<Traits>& field)
+{
+  double worst = 180.;
+  for(const auto& q : LM::compute_tetrahedra_quality(mesh, field)) worst = (std::min)(worst, q.theta_min);
+  return worst;
+}
+
+std::set<std::array<int, 3> > boundary(const LM::Tetrahedral_mesh_3<Point_3>& mesh)
+{
+  std::set<std::array<int, 3> > faces;
+  for(auto f : mesh.boundary_faces) { std::sort(f.begin(), f.end()); faces.insert(f); }
+  return faces;
+}
+
+TEST(Flip_tetrahedra, ValidBoundaryKeptWorstAngleNotLowered)
+{
+  for(unsigned int seed : { 1u, 2u, 3u }) {
+    LM::Tetrahedral_mesh_3<Point_3> mesh = jittered_mesh(seed);
+    ASSERT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
+    // an anisotropic field too: flips are judged in its isotropic space
+    Traits::Matrix_3 t;
+    t << 1.5, 0.2, 0., 0., 1., 0., 0., 0.1, 0.7;
+    for(const LM::Constant_frame_field_3<Traits>& field : { LM::Constant_frame_field_3<Traits>(), LM::Constant_frame_field_3<Traits>(t) }) {
+      LM::Tetrahedral_mesh_3<Point_3> m = mesh;
+      const double before = worst_angle(m, field);
+      const std::size_t tets_before = m.tets.size();
+      const LM::Flip_result r = LM::flip_tetrahedra(m, field);
+      EXPECT_GT(r.total(), 0u);
+      EXPECT_GE(worst_angle(m, field), before);
+      const LM::Mesh_validity_report v = LM::check_tetrahedral_mesh(m);
+      EXPECT_TRUE(v.valid()) << v.message;
+      EXPECT_EQ(boundary(m), boundary(mesh));
+      // a 2-3 flip adds a tetrahedron and a 3-2 flip removes one; larger edge removals
+      // (n tetrahedra into 2n - 4) only add
+      EXPECT_GE(m.tets.size() + r.flips32, tets_before + r.flips23);
+    }
+  }
+}
+
+TEST(Smooth_vertices, RaisesTheWorstAngleAndKeepsVerticesOnTheirConstraints)
+{
+  const LM::Constant_frame_field_3<Traits> field;
+  LM::Tetrahedral_mesh_3<Point_3> mesh = jittered_mesh(5);
+  const LM::Tetrahedral_mesh_3<Point_3> original = mesh;
+  const double before = worst_angle(mesh, field);
+  LM::Smoothing_options o;
+  o.threads = 2;
+  EXPECT_GT(LM::smooth_vertices(mesh, unit_cube(), field, o), 0u);
+  EXPECT_GT(worst_angle(mesh, field), before);
+  const LM::Mesh_validity_report v = LM::check_tetrahedral_mesh(mesh);
+  EXPECT_TRUE(v.valid()) << v.message;
+  for(std::size_t i = 0; i < mesh.points.size(); ++i) {
+    const double d = unit_cube().project_on_surface(mesh.points[i]).squared_distance;
+    switch(mesh.vertex_kinds[i]) {
+      case LM::Particle_kind::FIXED: EXPECT_EQ(mesh.points[i], original.points[i]); break;
+      case LM::Particle_kind::SHARP_EDGE: EXPECT_LT(unit_cube().project_on_features(mesh.points[i]).squared_distance, 1e-20); break;
+      case LM::Particle_kind::BOUNDARY: EXPECT_LT(d, 1e-20); break;
+      case LM::Particle_kind::FREE: EXPECT_TRUE(unit_cube().is_inside(mesh.points[i])); break;
+    }
+  }
+  // the same result with one thread
+  LM::Tetrahedral_mesh_3<Point_3> single = original;
+  o.threads = 1;
+  LM::smooth_vertices(single, unit_cube(), field, o);
+  EXPECT_EQ(single.points, mesh.points);
+}
+
+} // namespace
