@@ -92,6 +92,17 @@ them (`tetrahedralize_particles()`).
     \cgalParamType{double}
     \cgalParamDefault{0.01 (the last round: 1e-4)}
   \cgalParamNEnd
+  \cgalParamNBegin{do_flip}
+    \cgalParamDescription{improve the connectivity by flips in the isotropic space (`flip_tetrahedra()`)}
+    \cgalParamType{bool}
+    \cgalParamDefault{true}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_smoothing_rounds}
+    \cgalParamDescription{rounds of worst-element smoothing and flips after the tetrahedralization
+                          (`smooth_vertices()`); 0 keeps the particle positions}
+    \cgalParamType{int}
+    \cgalParamDefault{2}
+  \cgalParamNEnd
   \cgalParamNBegin{visitor}
     \cgalParamDescription{progress: `round_done(const Lattice_mesher_3::Round_report&)` after each round;
                           pass `std::ref(v)` to keep the state in `v`}
@@ -134,6 +145,8 @@ lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
   p.sigma_ratio = choose_parameter(get_parameter(np, internal_np::sigma_ratio), 0.3);
   p.neighbor_radius = choose_parameter(get_parameter(np, internal_np::neighbor_radius_ratio), 1.3);
   p.gradient_tolerance = choose_parameter(get_parameter(np, internal_np::gradient_tolerance), 1e-2);
+  p.flip = choose_parameter(get_parameter(np, internal_np::do_flip), true);
+  p.smoothing_rounds = choose_parameter(get_parameter(np, internal_np::number_of_smoothing_rounds), 2);
 
   const double edge_length = choose_parameter(get_parameter(np, internal_np::edge_length), 0.);
   const double vertices = choose_parameter(get_parameter(np, internal_np::number_of_vertices), 0.);

@@ -61,7 +61,7 @@ class Flip_mesh
 public:
   Flip_mesh(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field) : mesh_(mesh), field_(field)
   {
-    for(std::size_t t = 0; t < mesh.tets.size(); ++t) add(mesh.tets[t]);
+    for(const std::array<int, 4>& t : mesh.tets) add(t, quality(t));
   }
 
   // smallest dihedral angle of (a, b, c, d) in the isotropic space at its centroid
@@ -91,14 +91,16 @@ public:
   bool try_replace(const std::vector<int>& old, std::vector<std::array<int, 4> >& created)
   {
     double before = 180., after = 180.;
-    for(int t : old) before = (std::min)(before, quality(tets_[t]));
-    for(auto& t : created) {
-      if(!positive(t)) return false;
-      after = (std::min)(after, quality(t));
+    for(int t : old) before = (std::min)(before, quality_[t]);
+    std::vector<double> q(created.size());
+    for(std::size_t k = 0; k < created.size(); ++k) {
+      if(!positive(created[k])) return false;
+      q[k] = quality(created[k]);
+      after = (std::min)(after, q[k]);
       if(after <= before + 1e-9) return false;
     }
     for(int t : old) remove(t);
-    for(const auto& t : created) add(t);
+    for(std::size_t k = 0; k < created.size(); ++k) add(created[k], q[k]);
     return true;
   }
 
@@ -159,7 +161,7 @@ public:
   {
     std::vector<int> out;
     for(std::size_t t = 0; t < tets_.size(); ++t)
-      if(alive_[t] && quality(tets_[t]) < angle) out.push_back(int(t));
+      if(alive_[t] && quality_[t] < angle) out.push_back(int(t));
     return out;
   }
   bool alive(int t) const { return alive_[t] != 0; }
@@ -222,10 +224,11 @@ private:
     return next == ring[0];
   }
 
-  void add(const std::array<int, 4>& t)
+  void add(const std::array<int, 4>& t, double quality)
   {
     const int id = int(tets_.size());
     tets_.push_back(t);
+    quality_.push_back(quality);
     alive_.push_back(1);
     for(int i = 0; i < 4; ++i) {
       auto& slot = faces_.emplace(sorted(std::array<int, 3>{ t[(i + 1) % 4], t[(i + 2) % 4], t[(i + 3) % 4] }),
@@ -255,6 +258,7 @@ private:
   Tetrahedral_mesh_3<Point_3>& mesh_;
   const FrameField& field_;
   std::vector<std::array<int, 4> > tets_;
+  std::vector<double> quality_;   // smallest dihedral angle of each tetrahedron, isotropic space
   std::vector<char> alive_;
   std::unordered_map<std::array<int, 3>, std::array<int, 2>, Face_key_hash> faces_;
   std::unordered_map<std::array<int, 2>, std::vector<int>, Face_key_hash> edges_;

@@ -175,15 +175,20 @@ inline std::pair<double, double> dihedral_angle_range(const Eigen::Vector3d& a, 
   // and all inward for a negative one: the dihedral angles are the same either way.
   const std::array<Eigen::Vector3d, 4> n = { (c - b).cross(d - b), (d - a).cross(c - a),
                                              (b - a).cross(d - a), (c - a).cross(b - a) };
-  std::pair<double, double> range(180., 0.);
-  // the faces i and j meet at the edge opposite both; its interior angle is pi - angle(n_i, n_j)
+  // The faces i and j meet at the edge opposite both, with interior angle pi - angle(n_i, n_j).
+  // The extreme angles are found by their cosines; only those two go through atan2, which is
+  // precise near 0 and 180 degrees (the hot loops of flips and smoothing call this).
+  std::array<double, 4> norm;
+  for(int i = 0; i < 4; ++i) norm[i] = n[i].norm();
+  int lo_i = 0, lo_j = 1, hi_i = 0, hi_j = 1;
+  double cos_lo = -2., cos_hi = 2.;   // cosine of the smallest and of the largest angle
   for(int i = 0; i < 4; ++i)
     for(int j = i + 1; j < 4; ++j) {
-      const double theta = internal::angle_degrees(n[i], -n[j]);
-      range.first = (std::min)(range.first, theta);
-      range.second = (std::max)(range.second, theta);
+      const double cosine = -n[i].dot(n[j]) / (norm[i] * norm[j]);
+      if(cosine > cos_lo) { cos_lo = cosine; lo_i = i; lo_j = j; }
+      if(cosine < cos_hi) { cos_hi = cosine; hi_i = i; hi_j = j; }
     }
-  return range;
+  return { internal::angle_degrees(n[lo_i], -n[lo_j]), internal::angle_degrees(n[hi_i], -n[hi_j]) };
 }
 
 /*!

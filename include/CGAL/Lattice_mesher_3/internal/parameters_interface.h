@@ -8,8 +8,7 @@
 // Named parameters of Lattice_mesher_3, in CGAL's X-macro format
 //   CGAL_add_named_parameter(<tag type>, <tag value>, <function name>)
 // These are the lines that would be appended to CGAL's own list upon merging.
-// CGAL parameters reused as they are (not redeclared): geom_traits, visitor, callback,
-// verbose, random_seed, number_of_iterations.
+// CGAL parameters reused as they are (not redeclared): geom_traits, visitor, random_seed, do_flip.
 // Names avoid the CGAL 5.5 Boost.Parameter keywords of Mesh_3 (edge_size, time_limit, ...).
 //
 // No include guard on purpose (X-macro file).
@@ -23,5 +22,4 @@ CGAL_add_named_parameter(coarse_levels_t, coarse_levels, coarse_levels)
 CGAL_add_named_parameter(sigma_ratio_t, sigma_ratio, sigma_ratio)
 CGAL_add_named_parameter(neighbor_radius_ratio_t, neighbor_radius_ratio, neighbor_radius_ratio)
 CGAL_add_named_parameter(gradient_tolerance_t, gradient_tolerance, gradient_tolerance)
-CGAL_add_named_parameter(max_iterations_per_round_t, max_iterations_per_round, max_iterations_per_round)
-CGAL_add_named_parameter(particle_kinds_t, particle_kinds, particle_kinds)
+CGAL_add_named_parameter(number_of_smoothing_rounds_t, number_of_smoothing_rounds, number_of_smoothing_rounds)

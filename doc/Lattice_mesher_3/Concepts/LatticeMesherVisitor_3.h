@@ -1,0 +1,36 @@
+/*!
+\ingroup PkgLatticeMesher3Concepts
+\cgalConcept
+
+A visitor that follows the particle optimization of `CGAL::Lattice_particle_mesher_3::optimize()`
+and `CGAL::lattice_mesh_3()`: `round_done()` is called after every optimization round, at every
+coarse-to-fine level, and once more after the closing round. It is called from the calling
+thread, outside any parallel region, so it needs no synchronization.
+
+Typical uses: print the progress (as the command-line program `lattice-mesh` does), record the
+energy per round to plot the convergence, or measure the time the optimization took.
+
+`CGAL::lattice_mesh_3()` takes the visitor through the named parameter `visitor`, by value (it
+is copied into the parameter pack) or as `std::ref(v)` to keep its state in `v`.
+
+\cgalHasModel `CGAL::Lattice_mesher_3::Null_lattice_mesher_visitor`
+
+\sa `CGAL::Lattice_mesher_3::Round_report`
+*/
+class LatticeMesherVisitor_3
+{
+public:
+  /// \name Operations
+  /// @{
+
+  /*!
+  called after each optimization round with what the round did: its coarse-to-fine `level`
+  (0 is the final edge length), its index `round` within the level, whether it was the closing
+  round (`final_round`, reported last), the number of particles, the numbers deleted and inserted
+  before the round, the L-BFGS iterations, the total Gaussian Hole Kernel energy at the end of the
+  round, and the seconds elapsed since the optimization started.
+  */
+  void round_done(const CGAL::Lattice_mesher_3::Round_report& report);
+
+  /// @}
+};
