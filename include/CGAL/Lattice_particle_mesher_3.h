@@ -128,7 +128,7 @@ public:
 
     for(int level = levels; level >= 0; --level) {
       Optimization_options o = options(std::ldexp(p_.edge_length, level));
-      if(level == levels) random_start(o.edge_length);
+      if(level == levels) initialize_particles(o.edge_length);
       else refine_particles(particles_, domain_, field_, lattice_, o);
       auto report = [&](int round, const Optimization_result& r, std::size_t del, std::size_t ins, bool final_round) {
         Round_report rep;
@@ -164,6 +164,34 @@ public:
   }
 
   void optimize() { Lattice_mesher_3::Null_lattice_mesher_visitor v; optimize(v); }
+
+  /// The random start at edge length `l`: N = density x isotropic volume / l^3 particles,
+  /// uniform in the isotropic space (rejection on |det B|) with the seed of the parameters, plus
+  /// a fixed particle at every corner of the domain. Replaces the current particles.
+  void initialize_particles(double l)
+  {
+    using namespace Lattice_mesher_3;
+    particles_.clear();
+    for(std::size_t c = 0; c < domain_.corners().size(); ++c)
+      particles_.push_back(domain_.corners()[c], Particle_kind::FIXED, int(c));
+    const std::size_t n = std::size_t(std::llround(lattice_.density * isotropic_volume() / (l * l * l)));
+    const CGAL::Bbox_3 bb = domain_.bbox();
+    const double max_det = det_b_samples().max * 1.25;
+    Uniform u(p_.seed);
+    const std::size_t max_tries = 1000 * (n + 10);
+    for(std::size_t tries = 0; particles_.size() < n + domain_.corners().size() && tries < max_tries; ++tries) {
+      const Point_3 p(bb.xmin() + u() * (bb.xmax() - bb.xmin()), bb.ymin() + u() * (bb.ymax() - bb.ymin()),
+                      bb.zmin() + u() * (bb.zmax() - bb.zmin()));
+      const double accept = u();
+      if(!domain_.is_inside(p)) continue;
+      if(accept * max_det > std::abs(Lattice_mesher_3::internal::isotropic_map(field_.frame(p), p).determinant())) continue;
+      particles_.push_back(p, Particle_kind::FREE);
+    }
+    if(particles_.size() < 4)
+      throw std::invalid_argument("Lattice_particle_mesher_3: could not place particles inside the domain "
+                                  "(is it empty, or the edge length larger than the domain?)");
+  }
+
 
   /// Connects the current particles into a tetrahedral mesh, then improves its worst tetrahedra
   /// (`flip_tetrahedra()`, `smooth_vertices()`), as the parameters say.
@@ -257,32 +285,6 @@ private:
       samples_computed_ = true;
     }
     return samples_;
-  }
-
-  // N = isotropic volume / l^3 x density particles, uniform in the isotropic space (rejection
-  // on |det B|), plus a fixed particle at every corner.
-  void random_start(double l)
-  {
-    using namespace Lattice_mesher_3;
-    particles_.clear();
-    for(std::size_t c = 0; c < domain_.corners().size(); ++c)
-      particles_.push_back(domain_.corners()[c], Particle_kind::FIXED, int(c));
-    const std::size_t n = std::size_t(std::llround(lattice_.density * isotropic_volume() / (l * l * l)));
-    const CGAL::Bbox_3 bb = domain_.bbox();
-    const double max_det = det_b_samples().max * 1.25;
-    Uniform u(p_.seed);
-    const std::size_t max_tries = 1000 * (n + 10);
-    for(std::size_t tries = 0; particles_.size() < n + domain_.corners().size() && tries < max_tries; ++tries) {
-      const Point_3 p(bb.xmin() + u() * (bb.xmax() - bb.xmin()), bb.ymin() + u() * (bb.ymax() - bb.ymin()),
-                      bb.zmin() + u() * (bb.zmax() - bb.zmin()));
-      const double accept = u();
-      if(!domain_.is_inside(p)) continue;
-      if(accept * max_det > std::abs(Lattice_mesher_3::internal::isotropic_map(field_.frame(p), p).determinant())) continue;
-      particles_.push_back(p, Particle_kind::FREE);
-    }
-    if(particles_.size() < 4)
-      throw std::invalid_argument("Lattice_particle_mesher_3: could not place particles inside the domain "
-                                  "(is it empty, or the edge length larger than the domain?)");
   }
 
   const MeshDomain& domain_;

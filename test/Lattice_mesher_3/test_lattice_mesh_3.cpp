@@ -30,6 +30,13 @@ typedef CGAL::Lattice_mesher_traits_3<K> Traits;
 typedef LM::Polyhedral_lattice_domain_3<K> Domain;
 typedef LM::Constant_frame_field_3<Traits> Field;
 
+template <typename F>
+void expect_error(F f, const std::string& needle)
+{
+  try { f(); ADD_FAILURE() << "no exception; expected one mentioning '" << needle << "'"; }
+  catch(const std::exception& e) { EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what(); }
+}
+
 const Domain& cube()
 {
   static const Domain d(LM::make_cube_surface_3<K>(0.1, 1.1));
@@ -119,12 +126,30 @@ TEST(Lattice_mesh_3, SurfaceMeshOverloadTakesTheFeatureAngle)
   EXPECT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
 }
 
-template <typename F>
-void expect_error(F f, const std::string& needle)
+// Every stage is a function with named parameters, usable on its own.
+TEST(Lattice_mesh_3, StagesAsNamedParameterFunctions)
 {
-  try { f(); ADD_FAILURE() << "no exception; expected one mentioning '" << needle << "'"; }
-  catch(const std::exception& e) { EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what(); }
+  const Field field;
+  LM::Lattice_mesher_parameters p;
+  p.edge_length = 0.25;
+  CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> mesher(cube(), field, p);
+  mesher.initialize_particles(0.25);
+  LM::Particle_set_3<Point_3> ps = mesher.particles();
+  EXPECT_EQ(ps.kinds[0], LM::Particle_kind::FIXED);
+  const auto np = CGAL::parameters::edge_length(0.25).lattice(LM::Lattice_type::BCC).number_of_threads(2);
+  const LM::Optimization_result r = LM::optimize_particles_round(ps, cube(), field, np.number_of_iterations(5));
+  EXPECT_LE(r.iterations, 5);
+  EXPECT_LT(r.energy, 0.);
+  const std::size_t before = ps.size();
+  const std::size_t deleted = LM::delete_particles(ps, cube(), field, np);
+  const std::size_t inserted = LM::insert_particles(ps, cube(), field, np);
+  EXPECT_EQ(ps.size(), before - deleted + inserted);
+  EXPECT_GT(deleted + inserted, 0u);
+  const auto mesh = LM::tetrahedralize_particles(ps, cube(), CGAL::parameters::number_of_threads(2));
+  EXPECT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
+  expect_error([&] { LM::optimize_particles_round(ps, cube(), field, CGAL::parameters::number_of_threads(2)); }, "edge_length");
 }
+
 
 TEST(Lattice_mesh_3, ClearErrors)
 {

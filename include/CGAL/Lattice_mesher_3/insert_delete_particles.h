@@ -249,6 +249,30 @@ std::size_t refine_particles(Particle_set_3<Point_3>& ps, const Domain& domain, 
   return internal::insert_candidates(ps, domain, field, lattice, axes, 0.1 * o.edge_length, o);
 }
 
+/// \ingroup PkgLatticeMesher3InsertionDeletion
+/// `delete_particles()` with the named parameters `edge_length` (required), `lattice` (BCC),
+/// `neighbor_radius_ratio` (1.3) and `number_of_threads` (1).
+template <typename Domain, typename FrameField, typename Point_3,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t delete_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
+                             const NamedParameters& np = parameters::default_values())
+{
+  return delete_particles(ps, domain, field, internal::stage_lattice(np),
+                          internal::stage_options<Optimization_options>(np, "delete_particles"));
+}
+
+/// \ingroup PkgLatticeMesher3InsertionDeletion
+/// `insert_particles()` with the named parameters `edge_length` (required), `lattice` (BCC),
+/// `sigma_ratio` (0.3) and `number_of_threads` (1).
+template <typename Domain, typename FrameField, typename Point_3,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t insert_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
+                             const NamedParameters& np = parameters::default_values())
+{
+  return insert_particles(ps, domain, field, internal::stage_lattice(np),
+                          internal::stage_options<Optimization_options>(np, "insert_particles"));
+}
+
 } // namespace Lattice_mesher_3
 } // namespace CGAL
 

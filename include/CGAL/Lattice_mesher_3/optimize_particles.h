@@ -15,6 +15,7 @@
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/frame_fields.h>
 #include <CGAL/Lattice_mesher_3/internal/particle_neighbors.h>
+#include <CGAL/Lattice_mesher_3/internal/stage_parameters.h>
 
 #include <Eigen/Core>
 #include <LBFGS.h>
@@ -289,6 +290,24 @@ Optimization_result optimize_particles_round(Particle_set_3<Point_3>& ps, const 
   }
   snap_particles_to_boundary(ps, domain, field, o);
   return result;
+}
+
+/*!
+\ingroup PkgLatticeMesher3Optimizer
+
+One optimization round, as `optimize_particles_round(ps, domain, field, lattice, options)`, with the
+settings given as named parameters: `edge_length` (required), `lattice` (default BCC),
+`sigma_ratio` (0.3), `neighbor_radius_ratio` (1.3), `gradient_tolerance` (0.01),
+`number_of_iterations` (MaxIts, 13; 0 runs to convergence) and `number_of_threads` (1).
+*/
+template <typename Domain, typename FrameField, typename Point_3,
+          typename NamedParameters = parameters::Default_named_parameters>
+Optimization_result optimize_particles_round(Particle_set_3<Point_3>& ps, const Domain& domain,
+                                             const FrameField& field,
+                                             const NamedParameters& np = parameters::default_values())
+{
+  return optimize_particles_round(ps, domain, field, internal::stage_lattice(np),
+                                  internal::stage_options<Optimization_options>(np, "optimize_particles_round"));
 }
 
 } // namespace Lattice_mesher_3

@@ -11,6 +11,7 @@
 #define CGAL_LATTICE_MESHER_3_TETRAHEDRALIZE_PARTICLES_H
 
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
+#include <CGAL/Lattice_mesher_3/internal/stage_parameters.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
@@ -56,7 +57,7 @@ already conforms to the boundary; CGAL's triangulation is exact and robust on de
 */
 template <typename Domain, typename Point_3>
 Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_3>& ps, const Domain& domain,
-                                                     const Tetrahedralization_options& o = Tetrahedralization_options())
+                                                     const Tetrahedralization_options& o)
 {
   typedef typename Domain::Geom_traits K;
   typedef CGAL::Triangulation_vertex_base_with_info_3<int, K> Vb;
@@ -179,6 +180,17 @@ Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_
     }
   }
   return mesh;
+}
+
+/// \ingroup PkgLatticeMesher3Tetrahedralization
+/// `tetrahedralize_particles()` with the named parameter `number_of_threads` (default 1).
+template <typename Domain, typename Point_3, typename NamedParameters = parameters::Default_named_parameters>
+Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_3>& ps, const Domain& domain,
+                                                     const NamedParameters& np = parameters::default_values())
+{
+  Tetrahedralization_options o;
+  o.threads = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_threads), 1);
+  return tetrahedralize_particles(ps, domain, o);
 }
 
 } // namespace Lattice_mesher_3
