@@ -100,6 +100,10 @@ private:
 
 namespace internal {
 
+template <typename Point_3>
+Eigen::Vector3d to_eigen(const Point_3& p)
+{ return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); }
+
 // Compile-time check of the FrameField_3 requirement, for a one-line error.
 template <typename Field, typename GT, typename = void>
 struct Is_frame_field_3 : std::false_type {};

@@ -154,13 +154,13 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
           if(has_features) {
             const auto f = domain.project_on_features(p);
             const Mat3 Bp = internal::isotropic_map(field.frame(p), p);
-            if(f.index >= 0 && (Bp * (internal::to_vector(p) - internal::to_vector(f.point))).norm() <= snap) {
+            if(f.index >= 0 && (Bp * (internal::to_eigen(p) - internal::to_eigen(f.point))).norm() <= snap) {
               p = f.point;
               cd.kind = Particle_kind::SHARP_EDGE;
               cd.feature = f.index;
             }
           }
-          q = internal::to_vector(p);
+          q = internal::to_eigen(p);
         }
         cd.p = p;
         cd.B = internal::isotropic_map(field.frame(p), p);
@@ -189,7 +189,7 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
   std::vector<std::size_t> order;
   for(std::size_t c = 0; c < cand.size(); ++c) {
     if(!cand[c].keep) continue;
-    const Vec3 q = internal::to_vector(cand[c].p);
+    const Vec3 q = internal::to_eigen(cand[c].p);
     bool dup = false;
     seen.for_each_near(q, [&](const Vec3& r, int) { if((cand[c].B * (q - r)).norm() < coincidence) dup = true; });
     if(dup) continue;
@@ -201,7 +201,7 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
   internal::Hash_grid_3 accepted(min_distance * reach);
   std::size_t inserted = 0;
   for(std::size_t c : order) {
-    const Vec3 q = internal::to_vector(cand[c].p);
+    const Vec3 q = internal::to_eigen(cand[c].p);
     bool blocked = false;
     accepted.for_each_near(q, [&](const Vec3& r, int) { if((cand[c].B * (q - r)).norm() < min_distance) blocked = true; });
     if(blocked) continue;

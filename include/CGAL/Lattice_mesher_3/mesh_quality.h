@@ -99,9 +99,6 @@ constexpr double degrees_per_radian = 57.295779513082320876798154814105;
 inline double angle_degrees(const Eigen::Vector3d& u, const Eigen::Vector3d& v)
 { return degrees_per_radian * std::atan2(u.cross(v).norm(), u.dot(v)); }
 
-template <typename Point_3>
-Eigen::Vector3d to_eigen(const Point_3& p)
-{ return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); }
 
 // Runs f(i) for i in [0, n) on all threads. OpenMP forbids exceptions from leaving the loop, so
 // the one of the lowest index is rethrown afterwards: the same error for any thread count.

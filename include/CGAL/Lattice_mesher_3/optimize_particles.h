@@ -131,13 +131,9 @@ template <typename Point_3>
 std::vector<Vec3> to_vectors(const std::vector<Point_3>& points)
 {
   std::vector<Vec3> x(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i)
-    x[i] = Vec3(CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z()));
+  for(std::size_t i = 0; i < points.size(); ++i) x[i] = to_eigen(points[i]);
   return x;
 }
-
-template <typename Point_3>
-Vec3 to_vector(const Point_3& p) { return Vec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); }
 
 // Unit normal (boundary) or tangent (sharp edge) that constrains each particle's motion.
 template <typename Domain, typename Point_3>
@@ -147,9 +143,9 @@ std::vector<Vec3> constraint_directions(const Particle_set_3<Point_3>& ps, const
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 256)
   for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(ps.size()); ++i) {
     if(ps.kinds[i] == Particle_kind::BOUNDARY)
-      d[i] = to_vector(domain.project_on_surface(ps.points[i]).direction);
+      d[i] = to_eigen(domain.project_on_surface(ps.points[i]).direction);
     else if(ps.kinds[i] == Particle_kind::SHARP_EDGE)
-      d[i] = to_vector(domain.project_on_curve(ps.points[i], std::size_t(ps.feature[i])).direction);
+      d[i] = to_eigen(domain.project_on_curve(ps.points[i], std::size_t(ps.feature[i])).direction);
   }
   return d;
 }
@@ -183,7 +179,7 @@ std::size_t snap_particles_to_boundary(Particle_set_3<Point_3>& ps, const Domain
     const Eigen::Matrix3d B = internal::isotropic_map(field.frame(p), p);
     const auto s = domain.project_on_surface(p);
     if(kind == Particle_kind::FREE) {
-      if(domain.is_inside(p) && (B * (internal::to_vector(p) - internal::to_vector(s.point))).norm() > threshold)
+      if(domain.is_inside(p) && (B * (internal::to_eigen(p) - internal::to_eigen(s.point))).norm() > threshold)
         continue;
       kind = Particle_kind::BOUNDARY;
       ++changed;
@@ -191,7 +187,7 @@ std::size_t snap_particles_to_boundary(Particle_set_3<Point_3>& ps, const Domain
     p = s.point;
     if(has_features) {
       const auto c = domain.project_on_features(p);
-      if(c.index >= 0 && (B * (internal::to_vector(p) - internal::to_vector(c.point))).norm() <= threshold) {
+      if(c.index >= 0 && (B * (internal::to_eigen(p) - internal::to_eigen(c.point))).norm() <= threshold) {
         p = c.point;
         kind = Particle_kind::SHARP_EDGE;
         ps.feature[i] = c.index;
