@@ -148,14 +148,16 @@ Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_
         for(Cell_handle c : inc) if(c->info()) to_remove.insert(c);
     }
     if(to_remove.empty()) break;
-    // remove only cells that touch the boundary, so that repairs stay local
-    std::size_t removed = 0;
+    // remove only cells that touch the boundary, so that repairs stay local; decided before any
+    // removal, so that the result does not depend on the order of the set (cell addresses)
+    std::vector<Cell_handle> touching;
     for(Cell_handle c : to_remove) {
       bool touches = false;
       for(int i = 0; i < 4; ++i) touches = touches || is_boundary_facet(c, i);
-      if(touches) { c->info() = 0; ++removed; }
+      if(touches) touching.push_back(c);
     }
-    if(removed == 0) for(Cell_handle c : to_remove) c->info() = 0;
+    for(Cell_handle c : (touching.empty() ? std::vector<Cell_handle>(to_remove.begin(), to_remove.end()) : touching))
+      c->info() = 0;
   }
 
   // 3. Output, with the particles that are used renumbered.
