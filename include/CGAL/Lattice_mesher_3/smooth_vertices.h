@@ -69,7 +69,8 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
   // mean angle is raised, and a star never drops below the target once it is above it. The cap
   // keeps good lattice tetrahedra from being traded away for tiny gains of the worst one.
   struct Score { double worst, sum; bool better(const Score& s) const { return worst > s.worst + 1e-3 || (worst >= s.worst && sum > s.sum + 1e-3); } };
-  auto star_quality = [&](int v, const Point_3& at) {
+  // `bound`: a candidate whose worst angle falls below it cannot win, and is abandoned early
+  auto star_quality = [&](int v, const Point_3& at, double bound) {
     Score s{ o.target_angle, 0. };
     for(int t : star[v]) {
       const std::array<int, 4>& tv = mesh.tets[t];
@@ -78,6 +79,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
       if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) return Score{ -1., 0. };
       const double q = tet_quality(std::size_t(t), v, at);
       s.worst = (std::min)(s.worst, q);
+      if(s.worst < bound) return Score{ -1., 0. };
       s.sum += q;
     }
     return s;
@@ -104,7 +106,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     const std::array<Eigen::Vector3d, 7> directions = { Eigen::Vector3d::UnitX(), -Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
                                                         -Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ(), -Eigen::Vector3d::UnitZ(),
                                                         (centroid - x).normalized() };
-    Score best = star_quality(v, mesh.points[v]);
+    Score best = star_quality(v, mesh.points[v], -1.);
     std::size_t accepted = 0;
     for(double step : { .3, .1, .03 })
       for(int repeat = 0, improved = 1; improved && repeat < 4; ++repeat) {
@@ -112,7 +114,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
         for(const Eigen::Vector3d& d : directions) {
           const Eigen::Vector3d y = internal::to_eigen(mesh.points[v]) + step * mean_edge * d;
           const Point_3 candidate = constrain(v, Point_3(y[0], y[1], y[2]));
-          const Score q = star_quality(v, candidate);
+          const Score q = star_quality(v, candidate, best.worst);
           if(q.better(best)) { best = q; mesh.points[v] = candidate; improved = 1; ++accepted; }
         }
       }
