@@ -38,8 +38,8 @@ struct Smoothing_options
 \ingroup PkgLatticeMesher3Flips
 
 Moves the vertices of the worst tetrahedra to raise the smallest dihedral angle of their star
-(measured in the isotropic space of `field`): a pattern search over the axis directions and the
-direction to the star's centroid, with steps of 30%, 10% and 3% of the star's mean edge length.
+(measured in the isotropic space of `field`): a pattern search over the axis and diagonal
+directions and the direction to the star's centroid, with steps of 30%, 10% and 3% of the star's mean edge length.
 Free vertices move freely, boundary vertices stay on the surface and sharp-edge vertices on the
 feature curves (each candidate is projected back), fixed vertices (corners) do not move. A move is
 kept only if no tetrahedron of the star is inverted (exact orientation tests) and the star's
@@ -103,9 +103,12 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
         if(w != v) { const Eigen::Vector3d y = internal::to_eigen(mesh.points[w]); centroid += y; mean_edge += (y - x).norm(); ++count; }
     centroid /= count;
     mean_edge /= count;
-    const std::array<Eigen::Vector3d, 7> directions = { Eigen::Vector3d::UnitX(), -Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
-                                                        -Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ(), -Eigen::Vector3d::UnitZ(),
-                                                        (centroid - x).normalized() };
+    // the 6 axis and 8 diagonal directions, and the direction to the star's centroid
+    std::array<Eigen::Vector3d, 15> directions;
+    for(int a = 0; a < 6; ++a) { directions[a] = Eigen::Vector3d::Zero(); directions[a][a / 2] = (a % 2) ? -1. : 1.; }
+    for(int d = 0; d < 8; ++d)
+      directions[6 + d] = Eigen::Vector3d((d & 1) ? -1. : 1., (d & 2) ? -1. : 1., (d & 4) ? -1. : 1.) / std::sqrt(3.);
+    directions[14] = (centroid - x).normalized();
     Score best = star_quality(v, mesh.points[v], -1.);
     std::size_t accepted = 0;
     for(double step : { .3, .1, .03 })
