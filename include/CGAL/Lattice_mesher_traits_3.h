@@ -19,8 +19,7 @@ namespace CGAL {
 \ingroup PkgLatticeMesher3Ref
 
 The default model of `LatticeMesherTraits_3`: the kernel `K` plus the dense matrix and
-vector types in which frames and isotropic-space vectors are expressed, and the
-conversions between kernel and matrix types that every stage uses.
+vector types in which frames and isotropic-space vectors are expressed.
 
 \tparam K a CGAL kernel with `double`-convertible coordinates, e.g. `Epick`.
 */
@@ -38,26 +37,6 @@ public:
   typedef Eigen::Matrix<double, 3, 1>      Vector_d3;
 
   Lattice_mesher_traits_3(const K& k = K()) : K(k) {}
-
-  struct To_vector_d3
-  {
-    Vector_d3 operator()(const Point_3& p) const
-    { return Vector_d3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); }
-    Vector_d3 operator()(const Vector_3& v) const
-    { return Vector_d3(CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z())); }
-  };
-  struct To_point_3
-  {
-    Point_3 operator()(const Vector_d3& v) const { return Point_3(v[0], v[1], v[2]); }
-  };
-  struct To_vector_3
-  {
-    Vector_3 operator()(const Vector_d3& v) const { return Vector_3(v[0], v[1], v[2]); }
-  };
-
-  To_vector_d3 to_vector_d3_object() const { return To_vector_d3(); }
-  To_point_3 to_point_3_object() const { return To_point_3(); }
-  To_vector_3 to_vector_3_object() const { return To_vector_3(); }
 };
 
 } // namespace CGAL

@@ -6,8 +6,7 @@
 
 The traits of `CGAL::Lattice_particle_mesher_3` and `CGAL::lattice_mesh_3()`: a CGAL kernel
 whose coordinates convert to `double`, plus the fixed-size dense matrix and vector types in which
-frames (`FrameField_3`) and isotropic-space vectors are expressed, and the conversions between
-the kernel's points and vectors and those dense vectors.
+frames (`FrameField_3`) and isotropic-space vectors are expressed.
 
 The optimizer, the insertion and deletion and the quality measures compute in `double` with
 Eigen's fixed-size types; exact predicates of the kernel are used where a decision must be
@@ -41,43 +40,6 @@ public:
 
   /// 3-vector of `double`: `Eigen::Vector3d`, used in the hot loops
   typedef unspecified_type Vector_d3;
-
-  /*!
-  A function object with the operators
-  `Vector_d3 operator()(const Point_3& p)` and `Vector_d3 operator()(const Vector_3& v)`,
-  which return the coordinates of `p` (of `v`) as `double`.
-  */
-  typedef unspecified_type To_vector_d3;
-
-  /*!
-  A function object with the operator `Point_3 operator()(const Vector_d3& v)`, which returns
-  the point of coordinates `v`.
-  */
-  typedef unspecified_type To_point_3;
-
-  /*!
-  A function object with the operator `Vector_3 operator()(const Vector_d3& v)`, which returns
-  the vector of coordinates `v`.
-  */
-  typedef unspecified_type To_vector_3;
-
-  /// @}
-
-  /// \name Operations
-  /// The following functions give access to the conversion objects:
-  /// @{
-
-  /*!
-  */
-  To_vector_d3 to_vector_d3_object() const;
-
-  /*!
-  */
-  To_point_3 to_point_3_object() const;
-
-  /*!
-  */
-  To_vector_3 to_vector_3_object() const;
 
   /// @}
 };
