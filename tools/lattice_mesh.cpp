@@ -153,15 +153,11 @@ static int run(const Domain& domain, const Field& field, const Options& o)
   p.flip = o.flip;
   p.smoothing_rounds = o.smoothing_rounds;
   p.edge_length = o.edge_length;
-  if(o.vertices > 0.) {
-    LM::Lattice_mesher_parameters probe = p;
-    probe.edge_length = 1.;
-    p.edge_length = Mesher(domain, field, probe).edge_length_for_vertices(o.vertices);
-  }
+  p.number_of_vertices = o.vertices;
   Mesher mesher(domain, field, p);
   if(!o.quiet)
     std::printf("lattice-mesh: %s lattice, l* = %.6g, about %.0f vertices expected, %d coarse level(s), %d thread(s)\n",
-                o.lattice.c_str(), p.edge_length, mesher.expected_vertices(p.edge_length), mesher.coarse_levels(), o.threads);
+                o.lattice.c_str(), mesher.edge_length(), mesher.expected_vertices(mesher.edge_length()), mesher.coarse_levels(), o.threads);
 
   const auto t0 = std::chrono::steady_clock::now();
   Progress progress{o.quiet};
@@ -172,7 +168,7 @@ static int run(const Domain& domain, const Field& field, const Options& o)
 
   const LM::Mesh_validity_report validity = LM::check_tetrahedral_mesh(mesh);
   LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, mesher.lattice());
-  q.hausdorff = LM::boundary_hausdorff_distance(mesh, domain, 0.25 * p.edge_length);
+  q.hausdorff = LM::boundary_hausdorff_distance(mesh, domain, 0.25 * mesher.edge_length());
   q.seconds.optimize = std::chrono::duration<double>(t1 - t0).count();
   q.seconds.mesh = std::chrono::duration<double>(t2 - t1).count();
   q.seconds.total = q.seconds.optimize + q.seconds.mesh;

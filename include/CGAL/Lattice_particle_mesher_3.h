@@ -53,7 +53,8 @@ struct Null_lattice_mesher_visitor
 /// Parameters of `Lattice_particle_mesher_3`, defaulting to the paper's values.
 struct Lattice_mesher_parameters
 {
-  double edge_length = 0.;             ///< l*, in the isotropic space of the field (required)
+  double edge_length = 0.;             ///< l*, in the isotropic space of the field
+  double number_of_vertices = 0.;      ///< instead of `edge_length`: l* for about this many vertices
   Lattice_type lattice = Lattice_type::BCC;
   unsigned int seed = 0;               ///< random start; same seed and threads give the same mesh
   int threads = 1;
@@ -97,19 +98,21 @@ public:
   Lattice_particle_mesher_3(const MeshDomain& domain, const FrameField& field, const Parameters& p)
     : domain_(domain), field_(field), p_(p), lattice_(Lattice_mesher_3::make_lattice(p.lattice))
   {
-    if(!(p.edge_length > 0.) || !std::isfinite(p.edge_length))
+    lattice_.sigma_ratio = p.sigma_ratio;
+    if((p.edge_length != 0.) == (p.number_of_vertices != 0.))
+      throw std::invalid_argument("Lattice_particle_mesher_3: give exactly one of the edge length and the number of vertices");
+    if(p.number_of_vertices != 0.) p_.edge_length = edge_length_for_vertices(p.number_of_vertices);
+    if(!(p_.edge_length > 0.) || !std::isfinite(p_.edge_length))
       throw std::invalid_argument("Lattice_particle_mesher_3: the edge length must be positive and finite");
     if(p.threads < 1) throw std::invalid_argument("Lattice_particle_mesher_3: the number of threads must be at least 1");
     if(p.coarse_levels < -1 || p.coarse_levels > max_coarse_levels)
       throw std::invalid_argument("Lattice_particle_mesher_3: coarse_levels must be -1 (automatic) or in [0, 4]");
     if(!(p.sigma_ratio > 0.)) throw std::invalid_argument("Lattice_particle_mesher_3: sigma_ratio must be positive");
-    lattice_.sigma_ratio = p.sigma_ratio;
-    const double iso_volume = isotropic_volume();
-    const double estimate = lattice_.density * iso_volume / std::pow(p.edge_length, 3);
+    const double estimate = lattice_.density * isotropic_volume() / std::pow(p_.edge_length, 3);
     if(!(estimate < max_particles))
     {
       std::ostringstream os;
-      os << "Lattice_particle_mesher_3: edge length " << p.edge_length << " would need about " << estimate
+      os << "Lattice_particle_mesher_3: edge length " << p_.edge_length << " would need about " << estimate
          << " particles (more than " << max_particles << "); choose a larger edge length";
       throw std::invalid_argument(os.str());
     }
@@ -240,6 +243,9 @@ public:
          + lattice_.length_factor * domain_.curves_length() * scale / l
          + double(domain_.corners().size());
   }
+
+  /// The edge length in use (given, or solved from the number of vertices).
+  double edge_length() const { return p_.edge_length; }
 
   /// The edge length at which the mesh has about `n` vertices (solves expected_vertices(l) = n).
   double edge_length_for_vertices(double n) const

@@ -148,22 +148,15 @@ lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
   p.flip = choose_parameter(get_parameter(np, internal_np::do_flip), true);
   p.smoothing_rounds = choose_parameter(get_parameter(np, internal_np::number_of_smoothing_rounds), 2);
 
-  const double edge_length = choose_parameter(get_parameter(np, internal_np::edge_length), 0.);
-  const double vertices = choose_parameter(get_parameter(np, internal_np::number_of_vertices), 0.);
   const bool has_length = !is_default_parameter<NamedParameters, internal_np::edge_length_t>::value;
   const bool has_count = !is_default_parameter<NamedParameters, internal_np::number_of_vertices_t>::value;
   if(has_length == has_count)
     throw std::invalid_argument("lattice_mesh_3(): give exactly one of edge_length() and number_of_vertices()");
-  if(has_length) {
-    if(!(edge_length > 0.) || !std::isfinite(edge_length))
-      throw std::invalid_argument("lattice_mesh_3(): edge_length() must be positive and finite");
-    p.edge_length = edge_length;
-  } else {
-    LM::Lattice_mesher_parameters probe = p;
-    probe.edge_length = 1.;
-    p.edge_length = Lattice_particle_mesher_3<Traits, MeshDomain, FrameField>(domain, field, probe)
-                      .edge_length_for_vertices(vertices);
-  }
+  p.edge_length = choose_parameter(get_parameter(np, internal_np::edge_length), 0.);
+  if(has_length && (!(p.edge_length > 0.) || !std::isfinite(p.edge_length)))
+    throw std::invalid_argument("lattice_mesh_3(): edge_length() must be positive and finite");
+  // the mesher solves for l* from the count
+  p.number_of_vertices = choose_parameter(get_parameter(np, internal_np::number_of_vertices), 0.);
 
   typedef typename internal_np::Lookup_named_param_def<
     internal_np::visitor_t, NamedParameters, LM::Null_lattice_mesher_visitor>::type Visitor;

@@ -18,6 +18,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_helpers.h"
+
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -53,23 +55,6 @@ void expect_near(const Vector_3& a, const Vector_3& b, double tol = 1e-12)
   EXPECT_LT(std::sqrt((a - b).squared_length()), tol) << a << " vs " << b;
 }
 
-// Runs `f`, expects it to throw `Exception`, and checks that the message contains each word.
-template <typename Exception>
-void expect_error(const std::function<void()>& f, const std::vector<std::string>& words)
-{
-  try {
-    f();
-    ADD_FAILURE() << "no exception";
-  }
-  catch(const Exception& e) {
-    for(const std::string& w : words)
-      EXPECT_NE(std::string(e.what()).find(w), std::string::npos)
-          << "'" << w << "' not in: " << e.what();
-  }
-  catch(const std::exception& e) {
-    ADD_FAILURE() << "wrong exception type: " << e.what();
-  }
-}
 
 // A scratch directory for input files, removed at the end of the test.
 struct Temp_dir

@@ -17,6 +17,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_helpers.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -35,22 +37,6 @@ typedef Eigen::Vector3d Vec3;
 
 namespace {
 
-// Runs `f`, expects it to throw `Exception`, and checks that the message contains each word.
-template <typename Exception>
-void expect_error(const std::function<void()>& f, const std::vector<std::string>& words)
-{
-  try {
-    f();
-    ADD_FAILURE() << "no exception";
-  }
-  catch(const Exception& e) {
-    for(const std::string& w : words)
-      EXPECT_NE(std::string(e.what()).find(w), std::string::npos) << "'" << w << "' not in: " << e.what();
-  }
-  catch(const std::exception& e) {
-    ADD_FAILURE() << "wrong exception type: " << e.what();
-  }
-}
 
 // ---------------------------------------------------------------------------------------------
 // Frame fields

@@ -17,6 +17,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_helpers.h"
+
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -30,12 +32,6 @@ typedef CGAL::Lattice_mesher_traits_3<K> Traits;
 typedef LM::Polyhedral_lattice_domain_3<K> Domain;
 typedef LM::Constant_frame_field_3<Traits> Field;
 
-template <typename F>
-void expect_error(F f, const std::string& needle)
-{
-  try { f(); ADD_FAILURE() << "no exception; expected one mentioning '" << needle << "'"; }
-  catch(const std::exception& e) { EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what(); }
-}
 
 const Domain& cube()
 {
@@ -147,29 +143,29 @@ TEST(Lattice_mesh_3, StagesAsNamedParameterFunctions)
   EXPECT_GT(deleted + inserted, 0u);
   const auto mesh = LM::tetrahedralize_particles(ps, cube(), CGAL::parameters::number_of_threads(2));
   EXPECT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
-  expect_error([&] { LM::optimize_particles_round(ps, cube(), field, CGAL::parameters::number_of_threads(2)); }, "edge_length");
+  expect_error([&] { LM::optimize_particles_round(ps, cube(), field, CGAL::parameters::number_of_threads(2)); }, { "edge_length" });
 }
 
 
 TEST(Lattice_mesh_3, ClearErrors)
 {
   const Field field;
-  expect_error([&] { CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(0.)); }, "edge_length");
-  expect_error([&] { CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(-0.1)); }, "edge_length");
-  expect_error([&] { CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(1e-5)); }, "larger edge length");
+  expect_error([&] { CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(0.)); }, { "edge_length" });
+  expect_error([&] { CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(-0.1)); }, { "edge_length" });
+  expect_error([&] { CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(1e-5)); }, { "larger edge length" });
 
   Traits::Matrix_3 singular;
   singular << 1, 0, 0, 0, 1, 0, 1, 1, 0;
   const Field bad(singular);
-  expect_error([&] { CGAL::lattice_mesh_3(cube(), bad, CGAL::parameters::edge_length(0.2)); }, "singular");
+  expect_error([&] { CGAL::lattice_mesh_3(cube(), bad, CGAL::parameters::edge_length(0.2)); }, { "singular" });
 
   const std::string dir = ::testing::TempDir();
   const std::string empty = dir + "/lattice_mesher_empty.off";
   { std::ofstream os(empty); }
-  expect_error([&] { LM::read_polyhedral_lattice_domain_3<K>(empty); }, "empty");
+  expect_error([&] { LM::read_polyhedral_lattice_domain_3<K>(empty); }, { "empty" });
   const std::string open = dir + "/lattice_mesher_open.off";
   { std::ofstream os(open); os << "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n"; }
-  expect_error([&] { LM::read_polyhedral_lattice_domain_3<K>(open); }, "border edges");
+  expect_error([&] { LM::read_polyhedral_lattice_domain_3<K>(open); }, { "border edges" });
 }
 
 // The command-line program: a run that writes every output, and a clear error for bad input.
