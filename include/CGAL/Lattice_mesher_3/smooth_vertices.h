@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace CGAL {
@@ -28,8 +29,11 @@ struct Smoothing_options
   /// Vertices of tetrahedra whose smallest dihedral angle (isotropic space, degrees) is below
   /// this are moved; the others, the lattice, stay where the optimization put them.
   double select_angle = 55.;
-  /// Moves first raise the smallest angle of a star up to this, then the sum of its angles.
-  double target_angle = 40.;
+  /// Moves lower the sum over a star of (target_angle - smallest angle)^2 over its tetrahedra
+  /// below the target ...
+  double target_angle = 60.;
+  /// ... and never lower the star's smallest angle below this (or its current value if lower).
+  double floor_angle = 40.;
   int max_passes = 4;
   int threads = 1;
 };
@@ -37,13 +41,13 @@ struct Smoothing_options
 /*!
 \ingroup PkgLatticeMesher3Flips
 
-Moves the vertices of the worst tetrahedra to raise the smallest dihedral angle of their star
-(measured in the isotropic space of `field`): a pattern search over the axis and diagonal
+Moves the vertices of the worst tetrahedra to lower the shortfall of their star's smallest
+dihedral angles (measured in the isotropic space of `field`) below a target: a pattern search over the axis and diagonal
 directions and the direction to the star's centroid, with steps of 30%, 10% and 3% of the star's mean edge length.
 Free vertices move freely, boundary vertices stay on the surface and sharp-edge vertices on the
 feature curves (each candidate is projected back), fixed vertices (corners) do not move. A move is
-kept only if no tetrahedron of the star is inverted (exact orientation tests) and the star's
-smallest angle rises, so the boundary stays on the surface and the mesh stays valid. Needs
+kept only if no tetrahedron of the star is inverted (exact orientation tests), the shortfall
+falls and the star's smallest angle does not fall below the floor, so the boundary stays on the surface and the mesh stays valid. Needs
 `mesh.vertex_kinds`. Returns the number of moves.
 */
 template <typename Point_3, typename Domain, typename FrameField>
@@ -64,25 +68,29 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     for(int i = 0; i < 4; ++i) p[i] = maps[t] * internal::to_eigen(mesh.tets[t][i] == moved ? at : mesh.points[mesh.tets[t][i]]);
     return dihedral_angle_range(p[0], p[1], p[2], p[3]).first;
   };
-  // The star of v with v at `at`, scored by (its smallest angle capped at the target, the sum of
-  // its smallest angles), compared lexicographically: bad stars are made better first, then the
-  // mean angle is raised, and a star never drops below the target once it is above it. The cap
-  // keeps good lattice tetrahedra from being traded away for tiny gains of the worst one.
-  struct Score { double worst, sum; bool better(const Score& s) const { return worst > s.worst + 1e-3 || (worst >= s.worst && sum > s.sum + 1e-3); } };
-  // `bound`: a candidate whose worst angle falls below it cannot win, and is abandoned early
+  // The star of v with v at `at`, scored by the sum over its tetrahedra of (target - angle)^2
+  // for smallest angles below the target: a worst angle raised by a few degrees at the price of
+  // good tetrahedra falling towards it costs more than it gains (max-min smoothing made more
+  // tetrahedra below 40 degrees than it fixed). `worst` is the star's smallest angle.
+  struct Score { double penalty, worst; };
+  // `bound`: a candidate whose penalty exceeds it cannot win, and is abandoned early
   auto star_quality = [&](int v, const Point_3& at, double bound) {
-    Score s{ o.target_angle, 0. };
+    Score s{ 0., 180. };
     for(int t : star[v]) {
       const std::array<int, 4>& tv = mesh.tets[t];
       std::array<Point_3, 4> p;
       for(int i = 0; i < 4; ++i) p[i] = tv[i] == v ? at : mesh.points[tv[i]];
-      if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) return Score{ -1., 0. };
+      if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) return Score{ HUGE_VAL, -1. };
       const double q = tet_quality(std::size_t(t), v, at);
       s.worst = (std::min)(s.worst, q);
-      if(s.worst < bound) return Score{ -1., 0. };
-      s.sum += q;
+      if(q < o.target_angle) s.penalty += CGAL::square(o.target_angle - q);
+      if(s.penalty > bound) return Score{ HUGE_VAL, -1. };
     }
     return s;
+  };
+  // a move must lower the penalty and may not lower the star's worst angle below the floor
+  auto better = [&](const Score& c, const Score& best) {
+    return c.penalty < best.penalty - 1e-6 && c.worst >= (std::min)(best.worst, o.floor_angle);
   };
   auto constrain = [&](int v, const Point_3& p) {
     switch(mesh.vertex_kinds[v]) {
@@ -109,7 +117,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     for(int d = 0; d < 8; ++d)
       directions[6 + d] = Eigen::Vector3d((d & 1) ? -1. : 1., (d & 2) ? -1. : 1., (d & 4) ? -1. : 1.) / std::sqrt(3.);
     directions[14] = (centroid - x).normalized();
-    Score best = star_quality(v, mesh.points[v], -1.);
+    Score best = star_quality(v, mesh.points[v], HUGE_VAL);
     std::size_t accepted = 0;
     for(double step : { .3, .1, .03 })
       for(int repeat = 0, improved = 1; improved && repeat < 4; ++repeat) {
@@ -117,8 +125,8 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
         for(const Eigen::Vector3d& d : directions) {
           const Eigen::Vector3d y = internal::to_eigen(mesh.points[v]) + step * mean_edge * d;
           const Point_3 candidate = constrain(v, Point_3(y[0], y[1], y[2]));
-          const Score q = star_quality(v, candidate, best.worst);
-          if(q.better(best)) { best = q; mesh.points[v] = candidate; improved = 1; ++accepted; }
+          const Score q = star_quality(v, candidate, best.penalty);
+          if(better(q, best)) { best = q; mesh.points[v] = candidate; improved = 1; ++accepted; }
         }
       }
     return accepted;
