@@ -10,6 +10,8 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Lattice_particle_mesher_3.h>
+#include <CGAL/Lattice_mesher_3/Discrete_frame_field_3.h>
+#include <CGAL/Lattice_mesher_3/IO/frame_field.h>
 #include <CGAL/Lattice_mesher_3/IO/medit.h>
 #include <CGAL/Lattice_mesher_3/IO/vtu.h>
 #include <CGAL/Lattice_mesher_3/Implicit_lattice_domain_3.h>
@@ -19,10 +21,12 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -32,21 +36,35 @@ typedef K::Point_3 Point_3;
 typedef CGAL::Lattice_mesher_traits_3<K> Traits;
 typedef Traits::Matrix_3 Matrix_3;
 typedef LM::Function_frame_field_3<Traits, std::function<Matrix_3(const Point_3&)> > Field;
+typedef LM::Discrete_frame_field_3<Traits> Discrete_field;
 typedef LM::Polyhedral_lattice_domain_3<K> Surface_domain;
 typedef LM::Implicit_lattice_domain_3<K, std::function<double(const Point_3&)> > Implicit_domain;
 
 static const char* usage =
-  "usage: lattice-mesh [INPUT | --domain cube|sphere|torus] [--lattice bcc|fcc|gaussian]\n"
-  "                    [--edge-length L | --vertices N] [--field identity|rotation-y]\n"
+  "usage: lattice-mesh [INPUT | --domain cube|cube11|sphere|torus] [--lattice bcc|fcc|gaussian]\n"
+  "                    [--edge-length L | --vertices N]\n"
+  "                    [--field identity|rotation-y|fig8|fig9|FILE [--field-data FILE]]\n"
   "                    [--feature-angle DEG] [--seed S] [--threads N] [--coarse-levels K]\n"
   "                    [--max-rounds R] [--no-flips] [--smoothing-rounds N] [--quiet]\n"
   "                    -o OUT.mesh [--vtu OUT.vtu] [--stats OUT.json]\n"
+  "       lattice-mesh [INPUT | --domain ...] [--field ...] --write-field OUT.txt --field-spacing H\n"
   "  INPUT            closed triangle surface (OFF, OBJ, STL, PLY)\n"
-  "  --domain         built-in shape: cube [0.1,1.1]^3, unit sphere, torus (axis y, radii 1 and 0.4)\n"
+  "  --domain         built-in shape: cube [0.1,1.1]^3, cube11 [1,11]^3, unit sphere,\n"
+  "                   torus (axis y, radii 1 and 0.4)\n"
   "  --lattice        bcc (default), fcc, or gaussian (hole-less kernel of Particle2013)\n"
   "  --edge-length    lattice cube edge l* in the isotropic space of the field\n"
   "  --vertices       pick l* so that the mesh has about N vertices\n"
-  "  --field          identity (default) or rotation-y (the paper's torus field Ry)\n"
+  "  --field          identity (default); rotation-y (the paper's torus field Ry); fig8, fig9 (the\n"
+  "                   paper's Fig. 8 and 9 fields, for the domains cube and cube11); or a discrete\n"
+  "                   field, whose samples must cover the domain's bounding box:\n"
+  "                   X.mesh  a Medit mesh whose vertices carry the frames of --field-data FILE\n"
+  "                           (default X.sol): a Medit .sol of frames (9 values, T row by row) or\n"
+  "                           of metrics M (6 values, T = M^-1/2), or a file of 9 numbers a line,\n"
+  "                           the frame vectors t1 t2 t3 one after the other\n"
+  "                   FILE    any other file: one sample a line, x y z t11 t12 t13 t21 ... t33\n"
+  "                           (T row by row)\n"
+  "  --write-field    write the field, sampled on a grid of spacing H over the domain's bounding\n"
+  "                   box, as a text file of samples, and exit\n"
   "  --feature-angle  sharp-edge threshold in degrees (default 60)\n"
   "  --no-flips, --smoothing-rounds N\n"
   "                   connectivity flips and rounds of worst-element smoothing after the\n"
@@ -54,8 +72,8 @@ static const char* usage =
 
 struct Options
 {
-  std::string input, domain, lattice = "bcc", field = "identity", out, vtu, stats;
-  double edge_length = 0., vertices = 0., feature_angle = 60.;
+  std::string input, domain, lattice = "bcc", field = "identity", field_data, write_field, out, vtu, stats;
+  double edge_length = 0., vertices = 0., feature_angle = 60., field_spacing = 0.;
   unsigned int seed = 0;
   int threads = 1, coarse_levels = -1, max_rounds = -1;
   bool quiet = false, flip = true;
@@ -87,6 +105,9 @@ static Options parse(int argc, char** argv)
     else if(a == "--edge-length") o.edge_length = to_number(a, value());
     else if(a == "--vertices") o.vertices = to_number(a, value());
     else if(a == "--field") o.field = value();
+    else if(a == "--field-data") o.field_data = value();
+    else if(a == "--write-field") o.write_field = value();
+    else if(a == "--field-spacing") o.field_spacing = to_number(a, value());
     else if(a == "--feature-angle") o.feature_angle = to_number(a, value());
     else if(a == "--seed") o.seed = (unsigned int)to_number(a, value());
     else if(a == "--threads") o.threads = int(to_number(a, value()));
@@ -103,7 +124,13 @@ static Options parse(int argc, char** argv)
     else throw std::invalid_argument("more than one input file: '" + o.input + "' and '" + a + "'");
   }
   if(o.input.empty() == o.domain.empty())
-    throw std::invalid_argument("give either an input surface file or --domain cube|sphere|torus");
+    throw std::invalid_argument("give either an input surface file or --domain cube|cube11|sphere|torus");
+  if(o.write_field.empty() != (o.field_spacing == 0.))
+    throw std::invalid_argument("--write-field OUT and --field-spacing H go together");
+  if(!o.write_field.empty()) {
+    if(!(o.field_spacing > 0.)) throw std::invalid_argument("--field-spacing must be positive");
+    return o;   // no mesh: the other options do not apply
+  }
   if(o.out.empty()) throw std::invalid_argument("an output file is required: -o OUT.mesh");
   if((o.edge_length != 0.) == (o.vertices != 0.))
     throw std::invalid_argument("give exactly one of --edge-length L and --vertices N");
@@ -116,15 +143,36 @@ static Options parse(int argc, char** argv)
   return o;
 }
 
-static Field make_field(const std::string& name)
+// The field, and its samples if it is discrete (to check that they cover the domain).
+struct Field_choice
 {
-  if(name == "identity")
-    return Field([](const Point_3&) { return Matrix_3(Matrix_3::Identity()); });
-  if(name == "rotation-y") {
-    const LM::Rotation_y_frame_field_3<Traits> ry;
-    return Field([ry](const Point_3& p) { return ry.frame(p); });
-  }
-  throw std::invalid_argument("unknown field '" + name + "' (expected identity or rotation-y)");
+  Field field;
+  std::shared_ptr<const Discrete_field> samples;
+};
+
+template <typename AnalyticField>
+static Field_choice analytic(const AnalyticField& f)
+{ return { Field([f](const Point_3& p) { return Matrix_3(f.frame(p)); }), nullptr }; }
+
+static Field_choice make_field(const Options& o)
+{
+  const std::string& name = o.field;
+  if(name == "identity") return analytic(LM::Constant_frame_field_3<Traits>());
+  if(name == "rotation-y") return analytic(LM::Rotation_y_frame_field_3<Traits>());
+  if(name == "fig8") return analytic(LM::Planar_layer_frame_field_3<Traits>());
+  if(name == "fig9") return analytic(LM::Cylindrical_layer_frame_field_3<Traits>());
+  if(!std::filesystem::exists(name))
+    throw std::invalid_argument("unknown field '" + name + "' (expected identity, rotation-y, fig8, fig9 or a field file)");
+  const bool medit = std::filesystem::path(name).extension() == ".mesh";
+  if(!medit && !o.field_data.empty())
+    throw std::invalid_argument("--field-data goes with a Medit field mesh (--field X.mesh), not with '" + name + "'");
+  const std::string data = o.field_data.empty() ? std::filesystem::path(name).replace_extension(".sol").string() : o.field_data;
+  const auto samples = std::make_shared<const Discrete_field>(medit ? LM::read_frame_field_from_medit<Traits>(name, data)
+                                                                    : LM::read_frame_field_samples<Traits>(name));
+  if(!o.quiet)
+    std::printf("lattice-mesh: field '%s': %zu samples, typical spacing %.6g\n", (medit ? name + "' with '" + data : name).c_str(),
+                samples->number_of_samples(), samples->typical_spacing());
+  return { Field([samples](const Point_3& p) { return samples->frame(p); }), samples };
 }
 
 struct Progress
@@ -141,9 +189,19 @@ struct Progress
 };
 
 template <typename Domain>
-static int run(const Domain& domain, const Field& field, const Options& o)
+static int run(const Domain& domain, const Field_choice& choice, const Options& o)
 {
   typedef CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> Mesher;
+  const Field& field = choice.field;
+  if(choice.samples) {
+    try { choice.samples->check_coverage(domain.bbox()); }
+    catch(const std::invalid_argument& e) { throw std::invalid_argument("--field " + o.field + ": " + e.what()); }
+  }
+  if(!o.write_field.empty()) {
+    LM::write_frame_field_samples(o.write_field, field, domain.bbox(), o.field_spacing);
+    if(!o.quiet) std::printf("lattice-mesh: wrote the field '%s' to '%s'\n", o.field.c_str(), o.write_field.c_str());
+    return 0;
+  }
   LM::Lattice_mesher_parameters p;
   p.lattice = LM::lattice_type_from_name(o.lattice);
   p.seed = o.seed;
@@ -193,16 +251,18 @@ int main(int argc, char** argv)
 {
   try {
     const Options o = parse(argc, argv);
-    const Field field = make_field(o.field);
+    const Field_choice field = make_field(o);
     if(!o.input.empty())
       return run(LM::read_polyhedral_lattice_domain_3<K>(o.input, o.feature_angle), field, o);
     if(o.domain == "cube")
       return run(Surface_domain(LM::make_cube_surface_3<K>(0.1, 1.1), o.feature_angle), field, o);
+    if(o.domain == "cube11")
+      return run(Surface_domain(LM::make_cube_surface_3<K>(1., 11.), o.feature_angle), field, o);
     if(o.domain == "sphere")
       return run(Implicit_domain(LM::Implicit_sphere_3<K>{Point_3(0., 0., 0.), 1.}, CGAL::Bbox_3(-1, -1, -1, 1, 1, 1)), field, o);
     if(o.domain == "torus")
       return run(Implicit_domain(LM::Implicit_torus_3<K>{1., .4}, CGAL::Bbox_3(-1.4, -.4, -1.4, 1.4, .4, 1.4)), field, o);
-    throw std::invalid_argument("unknown domain '" + o.domain + "' (expected cube, sphere or torus)");
+    throw std::invalid_argument("unknown domain '" + o.domain + "' (expected cube, cube11, sphere or torus)");
   } catch(const std::exception& e) {
     std::cerr << "lattice-mesh: error: " << e.what() << "\n" << (argc <= 1 ? usage : "");
     return 1;

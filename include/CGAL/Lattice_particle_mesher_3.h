@@ -211,12 +211,15 @@ public:
     Lattice_mesher_3::Tetrahedralization_options o;
     o.threads = p_.threads;
     Mesh mesh = Lattice_mesher_3::tetrahedralize_particles(particles_, domain_, o);
-    if(p_.flip) Lattice_mesher_3::flip_tetrahedra(mesh, field_);
+    // the shape-matching flips need a lattice to match: not for the hole-less kernel
+    Lattice_mesher_3::Flip_options fo;
+    if(lattice_.has_holes()) { fo.lattice = lattice_; fo.edge_length = p_.edge_length; }
+    if(p_.flip) Lattice_mesher_3::flip_tetrahedra(mesh, field_, fo);
     Lattice_mesher_3::Smoothing_options so;
     so.threads = p_.threads;
     for(int round = 0; round < p_.smoothing_rounds; ++round) {
       if(Lattice_mesher_3::smooth_vertices(mesh, domain_, field_, so) == 0) break;
-      if(p_.flip) Lattice_mesher_3::flip_tetrahedra(mesh, field_);
+      if(p_.flip) Lattice_mesher_3::flip_tetrahedra(mesh, field_, fo);
     }
     return mesh;
   }

@@ -10,6 +10,7 @@
 #ifndef CGAL_LATTICE_MESHER_3_FLIP_TETRAHEDRA_H
 #define CGAL_LATTICE_MESHER_3_FLIP_TETRAHEDRA_H
 
+#include <CGAL/Lattice_mesher_3/Lattice_3.h>
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/mesh_quality.h>
 
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <unordered_map>
 #include <vector>
 
@@ -27,8 +29,17 @@ namespace Lattice_mesher_3 {
 /// Settings of `flip_tetrahedra()`.
 struct Flip_options
 {
-  /// Only faces and edges of tetrahedra whose smallest dihedral angle (isotropic space, degrees)
-  /// is below this are tried: the lattice interior is left alone.
+  /// The lattice whose tetrahedra the mapped tetrahedra should match, and its cube edge l*.
+  /// Without them (no one-ring, or l* = 0) only the smallest angle is raised.
+  Lattice_3 lattice;
+  double edge_length = 0.;
+  /// Tetrahedra whose shape energy is below this are taken as lattice tetrahedra and not tried.
+  double shape_tolerance = 0.05;
+  /// Shape-matching flips may not take the smallest angle of the tetrahedra they replace below
+  /// this (or below its current value if that is lower).
+  double floor_angle = 40.;
+  /// Then only faces and edges of tetrahedra whose smallest dihedral angle (isotropic space,
+  /// degrees) is below this are tried for a higher smallest angle.
   double target_angle = 50.;
   int max_passes = 8;
   /// Edges with more incident tetrahedra than this are not removed (the ring's triangulations grow
@@ -43,6 +54,26 @@ struct Flip_result
   std::size_t total() const { return flips23 + flips32 + edge_removals; }
 };
 
+/*!
+\ingroup PkgLatticeMesher3Flips
+Shape energy of a tetrahedron given in the isotropic space: the sum over its six edges of
+min_k |e / l - O_k|^2, the squared distance of the edge, in lattice units, to the closest
+one-ring offset. It is 0 exactly for the tetrahedra of the lattice's Delaunay tetrahedralization
+(BCC: all; FCC: the regular ones and the quarters of the octahedra), whose edges are one-ring offsets.
+*/
+inline double lattice_shape_energy(const std::array<Eigen::Vector3d, 4>& p, const Lattice_3& lattice, double l)
+{
+  double e = 0.;
+  for(int i = 0; i < 4; ++i)
+    for(int j = i + 1; j < 4; ++j) {
+      const Eigen::Vector3d v = (p[j] - p[i]) / l;
+      double best = HUGE_VAL;
+      for(const Eigen::Vector3d& o : lattice.one_ring) best = (std::min)(best, (v - o).squaredNorm());
+      e += best;
+    }
+  return e;
+}
+
 namespace internal {
 
 struct Face_key_hash
@@ -53,27 +84,37 @@ struct Face_key_hash
   { return std::size_t(k[0]) * 73856093u ^ std::size_t(k[1]) * 19349663u; }
 };
 
+// What a flip is judged by: the smallest dihedral angle of a tetrahedron (isotropic space, B at
+// its centroid) and, when a lattice is given, its shape energy.
+struct Flip_measure { double angle, shape; };
+
 // A tetrahedral mesh under flips: tetrahedra with their faces and edges indexed by sorted vertex
 // tuples, so that the tetrahedra around a face or an edge are found in constant time.
+// Two criteria: SHAPE lowers the sum of the shape energies (the connectivity follows the field)
+// without taking the smallest angle below the floor; ANGLE raises the smallest angle.
 template <typename Point_3, typename FrameField>
 class Flip_mesh
 {
 public:
-  Flip_mesh(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field) : mesh_(mesh), field_(field)
+  enum Criterion { SHAPE, ANGLE };
+
+  Flip_mesh(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field, const Flip_options& o)
+    : mesh_(mesh), field_(field), o_(o)
   {
-    for(const std::array<int, 4>& t : mesh.tets) add(t, quality(t));
+    for(const std::array<int, 4>& t : mesh.tets) add(t, measure(t));
   }
 
-  // smallest dihedral angle of (a, b, c, d) in the isotropic space at its centroid
-  double quality(const std::array<int, 4>& t) const
+  Flip_measure measure(const std::array<int, 4>& t) const
   {
     std::array<Eigen::Vector3d, 4> p;
     for(int i = 0; i < 4; ++i) p[i] = to_eigen(mesh_.points[t[i]]);
     const Eigen::Vector3d c = .25 * (p[0] + p[1] + p[2] + p[3]);
     const Eigen::Matrix3d b = isotropic_map_at<Point_3>(field_, c);
     for(Eigen::Vector3d& q : p) q = b * (q - c);
-    return dihedral_angle_range(p[0], p[1], p[2], p[3]).first;
+    return { dihedral_angle_range(p[0], p[1], p[2], p[3]).first,
+             has_shape() ? lattice_shape_energy(p, o_.lattice, o_.edge_length) : 0. };
   }
+  bool has_shape() const { return !o_.lattice.one_ring.empty() && o_.edge_length > 0.; }
 
   CGAL::Orientation orientation(int a, int b, int c, int d) const
   { return CGAL::orientation(mesh_.points[a], mesh_.points[b], mesh_.points[c], mesh_.points[d]); }
@@ -87,25 +128,28 @@ public:
     return true;
   }
 
-  // replaces the tetrahedra `old` by `created` if that raises the smallest angle among them
-  bool try_replace(const std::vector<int>& old, std::vector<std::array<int, 4> >& created)
+  // replaces the tetrahedra `old` by `created` if the criterion says it is better
+  bool try_replace(const std::vector<int>& old, std::vector<std::array<int, 4> >& created, Criterion c)
   {
-    double before = 180., after = 180.;
-    for(int t : old) before = (std::min)(before, quality_[t]);
-    std::vector<double> q(created.size());
+    double before = 180., after = 180., shape_before = 0., shape_after = 0.;
+    for(int t : old) { before = (std::min)(before, measure_[t].angle); shape_before += measure_[t].shape; }
+    const double floor = c == ANGLE ? before + 1e-9 : (std::min)(before, o_.floor_angle);
+    std::vector<Flip_measure> m(created.size());
     for(std::size_t k = 0; k < created.size(); ++k) {
       if(!positive(created[k])) return false;
-      q[k] = quality(created[k]);
-      after = (std::min)(after, q[k]);
-      if(after <= before + 1e-9) return false;
+      m[k] = measure(created[k]);
+      after = (std::min)(after, m[k].angle);
+      shape_after += m[k].shape;
+      if(after < floor || (c == ANGLE && after <= floor)) return false;
+      if(c == SHAPE && shape_after >= shape_before - 1e-9) return false;
     }
     for(int t : old) remove(t);
-    for(std::size_t k = 0; k < created.size(); ++k) add(created[k], q[k]);
+    for(std::size_t k = 0; k < created.size(); ++k) add(created[k], m[k]);
     return true;
   }
 
   // 2-3 flip of the face (a, b, c) shared by two tetrahedra
-  bool flip23(const std::array<int, 3>& f)
+  bool flip23(const std::array<int, 3>& f, Criterion c)
   {
     auto it = faces_.find(sorted(f));
     if(it == faces_.end() || it->second[1] < 0) return false;
@@ -115,13 +159,13 @@ public:
     // the segment pq must cross the triangle: the three new tetrahedra have the same orientation
     const CGAL::Orientation o = orientation(f[0], f[1], p, q);
     if(o == CGAL::COPLANAR || orientation(f[1], f[2], p, q) != o || orientation(f[2], f[0], p, q) != o) return false;
-    return try_replace({ t0, t1 }, created);
+    return try_replace({ t0, t1 }, created, c);
   }
 
   // removal of the interior edge (a, b): its ring of n vertices is triangulated (the best of
-  // all triangulations for the smallest angle, by dynamic programming), each triangle joined to
-  // a and to b. n = 3 is the 3-2 flip, n = 4 the 4-4 flip.
-  int remove_edge(int a, int b, int max_ring)
+  // all triangulations by dynamic programming: the highest smallest angle, or the lowest shape
+  // energy), each triangle joined to a and to b. n = 3 is the 3-2 flip, n = 4 the 4-4 flip.
+  int remove_edge(int a, int b, int max_ring, Criterion c)
   {
     auto it = edges_.find(sorted(std::array<int, 2>{ a, b }));
     if(it == edges_.end()) return 0;
@@ -130,23 +174,32 @@ public:
     if(n < 3 || n > max_ring) return 0;
     std::vector<int> ring;
     if(!order_ring(a, b, around, ring)) return 0;   // a boundary edge: its ring is open
+    // orient the ring counterclockwise seen from a: then every triangle (i < k < j) of a valid
+    // triangulation has a on its positive and b on its negative side (see pair_quality)
+    if(orientation(a, b, ring[0], ring[1]) == CGAL::POSITIVE) std::reverse(ring.begin(), ring.end());
 
-    // best[i][j]: best smallest angle triangulating ring[i..j]; choice[i][j] the apex
-    std::vector<std::vector<double> > best(n, std::vector<double>(n, 180.));
+    // best[i][j]: the best score triangulating ring[i..j] (ANGLE: the smallest angle, SHAPE:
+    // minus the shape energy, both maximized; -inf: no valid triangulation); choice[i][j] the apex
+    const double none = -HUGE_VAL;
+    std::vector<std::vector<double> > best(n, std::vector<double>(n, c == ANGLE ? 180. : 0.));
     std::vector<std::vector<int> > choice(n, std::vector<int>(n, -1));
     for(int len = 2; len < n; ++len)
       for(int i = 0; i + len < n; ++i) {
         const int j = i + len;
-        best[i][j] = -1.;
+        best[i][j] = none;
         for(int k = i + 1; k < j; ++k) {
-          const double q = (std::min)((std::min)(best[i][k], best[k][j]), pair_quality(ring[i], ring[k], ring[j], a, b));
+          if(best[i][k] == none || best[k][j] == none) continue;
+          Flip_measure m;
+          if(!pair_measure(ring[i], ring[k], ring[j], a, b, m)) continue;
+          const double q = c == ANGLE ? (std::min)((std::min)(best[i][k], best[k][j]), m.angle)
+                                      : best[i][k] + best[k][j] - m.shape;
           if(q > best[i][j]) { best[i][j] = q; choice[i][j] = k; }
         }
       }
-    if(best[0][n - 1] <= 0.) return 0;
+    if(best[0][n - 1] == none) return 0;
     std::vector<std::array<int, 4> > created;
     collect(ring, choice, 0, n - 1, a, b, created);
-    return try_replace(around, created) ? n : 0;
+    return try_replace(around, created, c) ? n : 0;
   }
 
   // writes the current tetrahedra back to the mesh
@@ -157,11 +210,13 @@ public:
       if(alive_[t]) mesh_.tets.push_back(tets_[t]);
   }
 
-  std::vector<int> tetrahedra_below(double angle) const
+  // the tetrahedra worth trying: below the angle (ANGLE) or above the shape tolerance (SHAPE)
+  std::vector<int> candidates(Criterion c) const
   {
     std::vector<int> out;
     for(std::size_t t = 0; t < tets_.size(); ++t)
-      if(alive_[t] && quality_[t] < angle) out.push_back(int(t));
+      if(alive_[t] && (c == ANGLE ? measure_[t].angle < o_.target_angle : measure_[t].shape > o_.shape_tolerance))
+        out.push_back(int(t));
     return out;
   }
   bool alive(int t) const { return alive_[t] != 0; }
@@ -177,13 +232,15 @@ private:
     return -1;
   }
 
-  // both tetrahedra (ring triangle + a, + b) valid, their smaller angle; -1 if a or b is on the
-  // wrong side
-  double pair_quality(int i, int j, int k, int a, int b) const
+  // both tetrahedra (ring triangle + a, + b): false if a or b is on the wrong side, else their
+  // smaller angle and summed shape energy. Opposite sides are not enough: a triangle folded
+  // against the ring's orientation would give tetrahedra overlapping the rest of the mesh.
+  bool pair_measure(int i, int j, int k, int a, int b, Flip_measure& m) const
   {
-    const CGAL::Orientation oa = orientation(i, j, k, a), ob = orientation(i, j, k, b);
-    if(oa == CGAL::COPLANAR || ob == CGAL::COPLANAR || oa == ob) return -1.;
-    return (std::min)(quality({ i, j, k, a }), quality({ i, j, k, b }));
+    if(orientation(i, j, k, a) != CGAL::POSITIVE || orientation(i, j, k, b) != CGAL::NEGATIVE) return false;
+    const Flip_measure ma = measure({ i, j, k, a }), mb = measure({ i, j, k, b });
+    m = { (std::min)(ma.angle, mb.angle), ma.shape + mb.shape };
+    return true;
   }
 
   void collect(const std::vector<int>& ring, const std::vector<std::vector<int> >& choice, int i, int j,
@@ -224,11 +281,11 @@ private:
     return next == ring[0];
   }
 
-  void add(const std::array<int, 4>& t, double quality)
+  void add(const std::array<int, 4>& t, const Flip_measure& m)
   {
     const int id = int(tets_.size());
     tets_.push_back(t);
-    quality_.push_back(quality);
+    measure_.push_back(m);
     alive_.push_back(1);
     for(int i = 0; i < 4; ++i) {
       auto& slot = faces_.emplace(sorted(std::array<int, 3>{ t[(i + 1) % 4], t[(i + 2) % 4], t[(i + 3) % 4] }),
@@ -257,8 +314,9 @@ private:
 
   Tetrahedral_mesh_3<Point_3>& mesh_;
   const FrameField& field_;
+  const Flip_options& o_;
   std::vector<std::array<int, 4> > tets_;
-  std::vector<double> quality_;   // smallest dihedral angle of each tetrahedron, isotropic space
+  std::vector<Flip_measure> measure_;
   std::vector<char> alive_;
   std::unordered_map<std::array<int, 3>, std::array<int, 2>, Face_key_hash> faces_;
   std::unordered_map<std::array<int, 2>, std::vector<int>, Face_key_hash> edges_;
@@ -271,36 +329,45 @@ private:
 
 Improves the connectivity of a tetrahedral mesh by topological flips: 2-3 flips of interior faces
 and removals of interior edges (3-2 and 4-4 flips, and the general edge removal with the best
-triangulation of the edge's ring), each done only when it raises the smallest dihedral angle of
-the tetrahedra it replaces, measured in the isotropic space of `field` (B at each tetrahedron's
-centroid). Only the faces and edges of tetrahedra below `target_angle` are tried. Flips never
-create an inverted tetrahedron (exact orientation tests) and never touch the boundary: boundary
-faces belong to one tetrahedron and boundary edges have an open ring, so neither is flipped.
+triangulation of the edge's ring), measured in the isotropic space of `field` (B at each
+tetrahedron's centroid). When `o.lattice` and `o.edge_length` are given, flips first lower the
+sum of the shape energies (`lattice_shape_energy()`) of the tetrahedra they replace, so that each
+mapped tetrahedron approaches a lattice tetrahedron: a Delaunay tetrahedralization ignores the
+field, this makes the connectivity follow it. Such a flip may not take the smallest angle below
+`o.floor_angle`. Then faces and edges of tetrahedra below `o.target_angle` are flipped when that
+raises the smallest dihedral angle of the tetrahedra replaced. Flips never create an inverted
+tetrahedron (exact orientation tests) and never touch the boundary: boundary faces belong to one
+tetrahedron and boundary edges have an open ring, so neither is flipped.
 */
 template <typename Point_3, typename FrameField>
 Flip_result flip_tetrahedra(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field,
                             const Flip_options& o = Flip_options())
 {
-  internal::Flip_mesh<Point_3, FrameField> fm(mesh, field);
+  typedef internal::Flip_mesh<Point_3, FrameField> Flip_mesh;
+  Flip_mesh fm(mesh, field, o);
   Flip_result result;
-  for(int pass = 0; pass < o.max_passes; ++pass) {
-    const std::size_t before = result.total();
-    for(int t : fm.tetrahedra_below(o.target_angle)) {
-      if(!fm.alive(t)) continue;
-      const std::array<int, 4> v = fm.tet(t);
-      bool done = false;
-      for(int i = 0; i < 4 && !done; ++i)
-        for(int j = i + 1; j < 4 && !done; ++j) {
-          const int n = fm.remove_edge(v[i], v[j], o.max_ring_size);
-          if(n == 3) ++result.flips32;
-          else if(n > 3) ++result.edge_removals;
-          done = n > 0;
-        }
-      for(int i = 0; i < 4 && !done; ++i)
-        if(fm.flip23({ v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4] })) { ++result.flips23; done = true; }
+  auto run = [&](typename Flip_mesh::Criterion c) {
+    for(int pass = 0; pass < o.max_passes; ++pass) {
+      const std::size_t before = result.total();
+      for(int t : fm.candidates(c)) {
+        if(!fm.alive(t)) continue;
+        const std::array<int, 4> v = fm.tet(t);
+        bool done = false;
+        for(int i = 0; i < 4 && !done; ++i)
+          for(int j = i + 1; j < 4 && !done; ++j) {
+            const int n = fm.remove_edge(v[i], v[j], o.max_ring_size, c);
+            if(n == 3) ++result.flips32;
+            else if(n > 3) ++result.edge_removals;
+            done = n > 0;
+          }
+        for(int i = 0; i < 4 && !done; ++i)
+          if(fm.flip23({ v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4] }, c)) { ++result.flips23; done = true; }
+      }
+      if(result.total() == before) break;
     }
-    if(result.total() == before) break;
-  }
+  };
+  if(fm.has_shape()) run(Flip_mesh::SHAPE);
+  run(Flip_mesh::ANGLE);
   fm.commit();
   return result;
 }

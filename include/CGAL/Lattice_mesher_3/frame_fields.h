@@ -98,6 +98,66 @@ private:
   double scale_;
 };
 
+/*!
+\ingroup PkgLatticeMesher3FrameFields
+The paper's field of Fig. 8, on the cube [0.1, 1.1]^3: axis-aligned cubes that flatten in x
+towards the plane x = 0.6,
+
+  B(p) = diag((1.0125 - exp(-|p_x - 0.6|))^-1, 1, 1),  T(p) = diag(1.0125 - exp(-|p_x - 0.6|), 1, 1),
+
+so that the cube's x edge shrinks from about 0.41 at the cube's faces x = 0.1 and 1.1 to 0.0125
+(80 times thinner than its other edges) on the plane.
+*/
+template <typename GT>
+class Planar_layer_frame_field_3
+{
+public:
+  typedef typename GT::Point_3  Point_3;
+  typedef typename GT::Matrix_3 Matrix_3;
+
+  Matrix_3 frame(const Point_3& p) const
+  {
+    Matrix_3 t = Matrix_3::Identity();
+    t(0, 0) = 1.0125 - std::exp(-std::abs(CGAL::to_double(p.x()) - 0.6));
+    return t;
+  }
+};
+
+/*!
+\ingroup PkgLatticeMesher3FrameFields
+The paper's field of Fig. 9, on the cube [1, 11]^3: cubes aligned with the cylinder of axis z
+and radius 7, flattened in the radial direction towards it. B = S R with
+
+  S = diag((1.05 - exp(-0.01 |x^2 + y^2 - 49|))^-1, 1, 1),  R = rows (x, y, 0)/r, (-y, x, 0)/r, (0, 0, 1),
+
+r = sqrt(x^2 + y^2): T = R^T S^-1 has the columns s (x, y, 0)/r (radial, s = 1.05 -
+exp(-0.01 |r^2 - 49|)), (-y, x, 0)/r (tangential) and (0, 0, 1) (axial); the radial edge is 20
+times shorter than the others at r = 7. The paper prints R's first two rows as (-x, y, 0)/r and
+(-y, x, 0)/r, which are not orthogonal (their dot product is 2xy/r^2): a sign typo, corrected here
+as the radial direction. On the z axis (r = 0), where the radial direction is undefined, x is
+taken as radial.
+*/
+template <typename GT>
+class Cylindrical_layer_frame_field_3
+{
+public:
+  typedef typename GT::Point_3  Point_3;
+  typedef typename GT::Matrix_3 Matrix_3;
+
+  Matrix_3 frame(const Point_3& p) const
+  {
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
+    const double r = std::sqrt(x * x + y * y);
+    const double c = r > 0. ? x / r : 1., s = r > 0. ? y / r : 0.;
+    const double radial = 1.05 - std::exp(-0.01 * std::abs(r * r - 49.));
+    Matrix_3 t;
+    t << radial * c, -s, 0.,
+         radial * s,  c, 0.,
+         0.,         0., 1.;
+    return t;
+  }
+};
+
 namespace internal {
 
 template <typename Point_3>

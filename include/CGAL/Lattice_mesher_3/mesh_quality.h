@@ -158,6 +158,29 @@ Eigen::Matrix3d isotropic_map_at(const FrameField& field, const Eigen::Vector3d&
   return isotropic_map(t, where);
 }
 
+// The tetrahedron t of `mesh` in the isotropic space: mapped by B at its centroid, about it.
+template <typename Point_3, typename FrameField>
+std::array<Eigen::Vector3d, 4> isotropic_tetrahedron(const Tetrahedral_mesh_3<Point_3>& mesh,
+                                                     const FrameField& field, std::size_t t)
+{
+  std::array<Eigen::Vector3d, 4> p;
+  for(int i = 0; i < 4; ++i) p[i] = to_eigen(mesh.points[mesh.tets[t][i]]);
+  const Eigen::Vector3d centroid = .25 * (p[0] + p[1] + p[2] + p[3]);
+  const Eigen::Matrix3d b = isotropic_map_at<Point_3>(field, centroid);
+  for(Eigen::Vector3d& q : p) q = b * (q - centroid);
+  return p;
+}
+
+// Area vectors (twice the area) of the faces opposite a, b, c, d, all outward for a positive
+// tetrahedron and all inward for a negative one: the dihedral angles are the same either way.
+inline std::array<Eigen::Vector3d, 4> face_area_vectors(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                                        const Eigen::Vector3d& c, const Eigen::Vector3d& d)
+{ return { (c - b).cross(d - b), (d - a).cross(c - a), (b - a).cross(d - a), (c - a).cross(b - a) }; }
+
+// The faces i and j meet at the edge opposite both, with interior angle pi - angle(n_i, n_j).
+inline double dihedral_angle(const std::array<Eigen::Vector3d, 4>& n, int i, int j)
+{ return angle_degrees(n[i], -n[j]); }
+
 } // namespace internal
 
 /*!
@@ -168,11 +191,7 @@ its orientation.
 inline std::pair<double, double> dihedral_angle_range(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                                       const Eigen::Vector3d& c, const Eigen::Vector3d& d)
 {
-  // Area vectors of the faces opposite a, b, c, d, all outward for a positive tetrahedron
-  // and all inward for a negative one: the dihedral angles are the same either way.
-  const std::array<Eigen::Vector3d, 4> n = { (c - b).cross(d - b), (d - a).cross(c - a),
-                                             (b - a).cross(d - a), (c - a).cross(b - a) };
-  // The faces i and j meet at the edge opposite both, with interior angle pi - angle(n_i, n_j).
+  const std::array<Eigen::Vector3d, 4> n = internal::face_area_vectors(a, b, c, d);
   // The extreme angles are found by their cosines; only those two go through atan2, which is
   // precise near 0 and 180 degrees (the hot loops of flips and smoothing call this).
   std::array<double, 4> norm;
@@ -185,7 +204,7 @@ inline std::pair<double, double> dihedral_angle_range(const Eigen::Vector3d& a, 
       if(cosine > cos_lo) { cos_lo = cosine; lo_i = i; lo_j = j; }
       if(cosine < cos_hi) { cos_hi = cosine; hi_i = i; hi_j = j; }
     }
-  return { internal::angle_degrees(n[lo_i], -n[lo_j]), internal::angle_degrees(n[hi_i], -n[hi_j]) };
+  return { internal::dihedral_angle(n, lo_i, lo_j), internal::dihedral_angle(n, hi_i, hi_j) };
 }
 
 /*!
@@ -200,7 +219,7 @@ inline Tetrahedron_quality_3 tetrahedron_quality(const Eigen::Vector3d& a, const
   Tetrahedron_quality_3 q;
   std::tie(q.theta_min, q.theta_max) = dihedral_angle_range(a, b, c, d);
   double squared_areas = 0.;
-  for(const Eigen::Vector3d& n : { (c - b).cross(d - b), (d - a).cross(c - a), (b - a).cross(d - a), (c - a).cross(b - a) })
+  for(const Eigen::Vector3d& n : internal::face_area_vectors(a, b, c, d))
     squared_areas += .25 * n.squaredNorm();
 
   const Eigen::Vector3d u = b - a, v = c - a, w = d - a;
@@ -251,11 +270,7 @@ std::vector<Tetrahedron_quality_3> compute_tetrahedra_quality(const Tetrahedral_
 {
   std::vector<Tetrahedron_quality_3> quality(mesh.tets.size());
   internal::parallel_for_rethrow(mesh.tets.size(), [&](std::size_t t) {
-    std::array<Eigen::Vector3d, 4> p;
-    for(int i = 0; i < 4; ++i) p[i] = internal::to_eigen(mesh.points[mesh.tets[t][i]]);
-    const Eigen::Vector3d centroid = .25 * (p[0] + p[1] + p[2] + p[3]);
-    const Eigen::Matrix3d b = internal::isotropic_map_at<Point_3>(field, centroid);
-    for(Eigen::Vector3d& q : p) q = b * (q - centroid);
+    const std::array<Eigen::Vector3d, 4> p = internal::isotropic_tetrahedron(mesh, field, t);
     quality[t] = tetrahedron_quality(p[0], p[1], p[2], p[3]);
   });
   return quality;
@@ -494,6 +509,91 @@ inline void write_quality_json(std::ostream& os, const Mesh_quality_3& q)
      << "}\n";
   os.flags(flags);
   os.precision(precision);
+}
+
+/*!
+\ingroup PkgLatticeMesher3Quality
+Returns the six interior dihedral angles (degrees) of the tetrahedron (a, b, c, d), whatever its
+orientation, at the edges ab, ac, ad, bc, bd and cd; their extremes are `dihedral_angle_range()`.
+*/
+inline std::array<double, 6> dihedral_angles(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                             const Eigen::Vector3d& c, const Eigen::Vector3d& d)
+{
+  const std::array<Eigen::Vector3d, 4> n = internal::face_area_vectors(a, b, c, d);
+  // the edge ab is opposite the faces 2 and 3 (those of d and c), and so on
+  return { internal::dihedral_angle(n, 2, 3), internal::dihedral_angle(n, 1, 3), internal::dihedral_angle(n, 1, 2),
+           internal::dihedral_angle(n, 0, 3), internal::dihedral_angle(n, 0, 2), internal::dihedral_angle(n, 0, 1) };
+}
+
+namespace internal {
+
+// Counts in bins of width `step` centred on 0, step, 2 step, ..., last: the exact angles of a
+// lattice (60 and 90 degrees) fall in the middle of a bin, not on a bin boundary.
+class Quality_histogram
+{
+public:
+  Quality_histogram(const char* name, double step, double last)
+    : name_(name), step_(step), counts_(std::size_t(std::lround(last / step)) + 1, 0)
+  {}
+
+  void add(double value)
+  {
+    const long bin = std::lround(value / step_);
+    ++counts_[std::size_t(std::clamp(bin, 0L, long(counts_.size()) - 1))];
+  }
+
+  void write(std::ostream& os) const
+  {
+    for(std::size_t k = 0; k < counts_.size(); ++k) os << name_ << ',' << double(k) * step_ << ',' << counts_[k] << '\n';
+  }
+
+private:
+  const char* name_;
+  double step_;
+  std::vector<std::size_t> counts_;
+};
+
+} // namespace internal
+
+/*!
+\ingroup PkgLatticeMesher3Quality
+Writes the distributions summarized by `compute_mesh_quality()`, with the same mapping to the
+isotropic space and the same formulas, as CSV histograms with the header `quantity,value,count`:
+`dihedral` counts the six dihedral angles of every tetrahedron (degrees, bins of 1 on [0, 180]),
+`rho` and `kappa` every tetrahedron (bins of 0.01 on [0, 1]) and `epsilon` the alignment error of
+every unique edge with respect to `lattice` (degrees, bins of 0.5 on [0, 90]). `value` is the
+centre of a bin; values beyond the last bin are counted in it. Every bin is written, empty or not.
+
+\tparam FrameField a model of `FrameField_3` for points of type `Point_3`
+\throws std::domain_error if the frame is singular at a centroid or a midpoint
+\throws std::runtime_error if the stream fails
+*/
+template <typename Point_3, typename FrameField>
+void write_quality_histograms_csv(std::ostream& os, const Tetrahedral_mesh_3<Point_3>& mesh,
+                                  const FrameField& field, const Lattice_3& lattice)
+{
+  // per tetrahedron: its six dihedral angles, rho and kappa, computed in parallel and binned in order
+  std::vector<std::array<double, 8> > values(mesh.tets.size());
+  internal::parallel_for_rethrow(mesh.tets.size(), [&](std::size_t t) {
+    const std::array<Eigen::Vector3d, 4> p = internal::isotropic_tetrahedron(mesh, field, t);
+    const std::array<double, 6> angles = dihedral_angles(p[0], p[1], p[2], p[3]);
+    const Tetrahedron_quality_3 q = tetrahedron_quality(p[0], p[1], p[2], p[3]);
+    std::copy(angles.begin(), angles.end(), values[t].begin());
+    values[t][6] = q.rho;
+    values[t][7] = q.kappa;
+  });
+  internal::Quality_histogram dihedral("dihedral", 1., 180.), rho("rho", .01, 1.), kappa("kappa", .01, 1.),
+                              epsilon("epsilon", .5, 90.);
+  for(const std::array<double, 8>& v : values) {
+    for(int i = 0; i < 6; ++i) dihedral.add(v[i]);
+    rho.add(v[6]);
+    kappa.add(v[7]);
+  }
+  for(double e : compute_edge_alignment_errors(mesh, field, lattice)) epsilon.add(e);
+
+  os << "quantity,value,count\n";
+  for(const internal::Quality_histogram* h : { &dihedral, &rho, &kappa, &epsilon }) h->write(os);
+  if(!os) throw std::runtime_error("write_quality_histograms_csv(): the output stream failed");
 }
 
 } // namespace Lattice_mesher_3

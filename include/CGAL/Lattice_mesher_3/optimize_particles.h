@@ -53,32 +53,39 @@ struct Optimization_result
 
 namespace internal {
 
-// The total GHK energy of a particle set as a function of the positions X (in units of l*),
-// over a frozen neighbour graph. Fixed particles have zero gradient; the gradient of a
-// sharp-edge particle is projected on its edge tangent, of a boundary particle on its tangent
-// plane, so the L-BFGS steps slide them along their constraint. Work buffers are allocated
-// once: the evaluation itself allocates nothing.
+// The total GHK energy of a particle set, over a frozen neighbour graph, as a function of the
+// variables U: particle i is at X0_i + M_i U_i (units of l*), with M_i = P_i T_i. T_i, the frame
+// at the start, makes U isotropic: under a stretched field the physical Hessian is B^T H B,
+// conditioned like the square of the stretch (6400 for fig8), while in U it is about H, so
+// L-BFGS converges as for T = I. P_i keeps the motion on the constraint: 0 for a fixed
+// particle, the edge tangent for a sharp-edge one, the tangent plane for a boundary one. Work
+// buffers are allocated once: the evaluation itself allocates nothing.
 class Particle_energy_3
 {
 public:
   Particle_energy_3(const Neighbor_graph& graph, const Gaussian_hole_kernel_3& kernel,
-                    const std::vector<Particle_kind>& kinds, const std::vector<Vec3>& directions,
-                    int threads)
-    : graph_(graph), kernel_(kernel), kinds_(kinds), directions_(directions), threads_(threads),
-      pair_energy_(graph.pairs.size()), pair_gradient_(graph.pairs.size())
+                    const std::vector<Vec3>& origin, const std::vector<Mat3>& maps, int threads)
+    : graph_(graph), kernel_(kernel), origin_(origin), maps_(maps), threads_(threads),
+      x_(origin.size()), pair_energy_(graph.pairs.size()), pair_gradient_(graph.pairs.size())
   {}
 
-  double operator()(const Eigen::VectorXd& X, Eigen::VectorXd& G)
+  // positions (units of l*) of the variables U
+  Vec3 position(const Eigen::VectorXd& U, std::ptrdiff_t i) const
+  { return origin_[i] + maps_[i] * U.segment<3>(3 * i); }
+
+  double operator()(const Eigen::VectorXd& U, Eigen::VectorXd& G)
   {
     const std::ptrdiff_t np = std::ptrdiff_t(graph_.pairs.size());
     const std::ptrdiff_t n = std::ptrdiff_t(graph_.number_of_particles());
 #pragma omp parallel num_threads(threads_)
     {
 #pragma omp for schedule(static)
+      for(std::ptrdiff_t i = 0; i < n; ++i) x_[i] = position(U, i);
+#pragma omp for schedule(static)
       for(std::ptrdiff_t p = 0; p < np; ++p) {
         const int i = graph_.pairs[p][0], j = graph_.pairs[p][1];
         const Mat3& B = graph_.pair_map[p];
-        const Vec3 v = B * (X.segment<3>(3 * i) - X.segment<3>(3 * j));
+        const Vec3 v = B * (x_[i] - x_[j]);
         Vec3 f;
         pair_energy_[p] = kernel_.energy_and_force(v, f);
         pair_gradient_[p] = -(B.transpose() * f);   // dE_ij/dX_i; dE_ij/dX_j is its opposite
@@ -91,40 +98,30 @@ public:
           if(graph_.pairs[p][0] == i) g += pair_gradient_[p];
           else g -= pair_gradient_[p];
         }
-        G.segment<3>(3 * i) = constrain(i, g);
+        G.segment<3>(3 * i) = maps_[i].transpose() * g;
       }
     }
     // serial sum: the same energy for any number of threads
     double e = 0.;
     for(double pe : pair_energy_) e += pe;
-    if(e < best_energy_) { best_energy_ = e; best_X_ = X; }
+    if(e < best_energy_) { best_energy_ = e; best_U_ = U; }
     return e;
   }
 
   double best_energy() const { return best_energy_; }
-  const Eigen::VectorXd& best_point() const { return best_X_; }
+  const Eigen::VectorXd& best_point() const { return best_U_; }
 
 private:
-  Vec3 constrain(std::ptrdiff_t i, const Vec3& g) const
-  {
-    switch(kinds_[i]) {
-      case Particle_kind::FIXED: return Vec3::Zero();
-      case Particle_kind::SHARP_EDGE: return directions_[i] * directions_[i].dot(g);
-      case Particle_kind::BOUNDARY: return g - directions_[i] * directions_[i].dot(g);
-      case Particle_kind::FREE: break;
-    }
-    return g;
-  }
-
   const Neighbor_graph& graph_;
   const Gaussian_hole_kernel_3& kernel_;
-  const std::vector<Particle_kind>& kinds_;
-  const std::vector<Vec3>& directions_;
+  const std::vector<Vec3>& origin_;
+  const std::vector<Mat3>& maps_;
   int threads_;
+  std::vector<Vec3> x_;
   std::vector<double> pair_energy_;
   std::vector<Vec3> pair_gradient_;
   double best_energy_ = std::numeric_limits<double>::infinity();
-  Eigen::VectorXd best_X_;
+  Eigen::VectorXd best_U_;
 };
 
 template <typename Point_3>
@@ -135,19 +132,33 @@ std::vector<Vec3> to_vectors(const std::vector<Point_3>& points)
   return x;
 }
 
-// Unit normal (boundary) or tangent (sharp edge) that constrains each particle's motion.
+// The maps M_i = P_i T_i of Particle_energy_3: P_i projects on the constraint of particle i
+// (its edge tangent, its tangent plane; 0 if fixed).
 template <typename Domain, typename Point_3>
-std::vector<Vec3> constraint_directions(const Particle_set_3<Point_3>& ps, const Domain& domain, int threads)
+std::vector<Mat3> motion_maps(const Particle_set_3<Point_3>& ps, const Domain& domain, const Particle_frames& frames,
+                              int threads)
 {
-  std::vector<Vec3> d(ps.size(), Vec3::Zero());
+  std::vector<Mat3> m(ps.size());
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 256)
   for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(ps.size()); ++i) {
-    if(ps.kinds[i] == Particle_kind::BOUNDARY)
-      d[i] = to_eigen(domain.project_on_surface(ps.points[i]).direction);
-    else if(ps.kinds[i] == Particle_kind::SHARP_EDGE)
-      d[i] = to_eigen(domain.project_on_curve(ps.points[i], std::size_t(ps.feature[i])).direction);
+    Mat3 p = Mat3::Identity();
+    switch(ps.kinds[i]) {
+      case Particle_kind::FIXED: p.setZero(); break;
+      case Particle_kind::SHARP_EDGE: {
+        const Vec3 d = to_eigen(domain.project_on_curve(ps.points[i], std::size_t(ps.feature[i])).direction);
+        p = d * d.transpose();
+        break;
+      }
+      case Particle_kind::BOUNDARY: {
+        const Vec3 d = to_eigen(domain.project_on_surface(ps.points[i]).direction);
+        p -= d * d.transpose();
+        break;
+      }
+      case Particle_kind::FREE: break;
+    }
+    m[i] = p * frames.T[i];
   }
-  return d;
+  return m;
 }
 
 } // namespace internal
@@ -235,11 +246,10 @@ Optimization_result optimize_particles_round(Particle_set_3<Point_3>& ps, const 
     const internal::Particle_frames frames = internal::compute_particle_frames<K>(x, field, o.threads);
     const internal::Neighbor_graph graph =
       internal::build_neighbor_graph<K>(x, frames, field, o.neighbor_radius * o.edge_length, o.threads);
-    const std::vector<Vec3> directions = internal::constraint_directions(ps, domain, o.threads);
-    internal::Particle_energy_3 energy(graph, kernel, ps.kinds, directions, o.threads);
-
-    Eigen::VectorXd X(3 * n);
-    for(std::size_t i = 0; i < n; ++i) X.segment<3>(3 * i) = x[i] / o.edge_length;
+    const std::vector<internal::Mat3> maps = internal::motion_maps(ps, domain, frames, o.threads);
+    for(Vec3& p : x) p /= o.edge_length;
+    internal::Particle_energy_3 energy(graph, kernel, x, maps, o.threads);
+    Eigen::VectorXd X = Eigen::VectorXd::Zero(3 * n);   // the variables U, from the start
 
     LBFGSpp::LBFGSParam<double> param;
     param.epsilon = tolerance;
@@ -275,7 +285,7 @@ Optimization_result optimize_particles_round(Particle_set_3<Point_3>& ps, const 
       result.gradient_rms = G.norm() / std::sqrt(double((std::max)(movable, std::size_t(1))));
     }
     for(std::size_t i = 0; i < n; ++i) {
-      const Vec3 p = X.segment<3>(3 * i) * o.edge_length;
+      const Vec3 p = energy.position(X, std::ptrdiff_t(i)) * o.edge_length;
       ps.points[i] = Point_3(p[0], p[1], p[2]);
     }
 #ifdef CGAL_LATTICE_MESHER_3_VERBOSE
