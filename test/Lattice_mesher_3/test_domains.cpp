@@ -22,7 +22,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <string>
@@ -54,22 +53,6 @@ void expect_near(const Vector_3& a, const Vector_3& b, double tol = 1e-12)
 {
   EXPECT_LT(std::sqrt((a - b).squared_length()), tol) << a << " vs " << b;
 }
-
-
-// A scratch directory for input files, removed at the end of the test.
-struct Temp_dir
-{
-  std::filesystem::path path = std::filesystem::temp_directory_path()
-      / ("lattice_mesher_3_test_domains_" + std::to_string(CGAL::get_default_random().get_int(0, 1 << 30)));
-  Temp_dir() { std::filesystem::create_directories(path); }
-  ~Temp_dir() { std::filesystem::remove_all(path); }
-  std::string write(const std::string& name, const std::string& contents) const
-  {
-    const std::string file = (path / name).string();
-    std::ofstream(file) << contents;
-    return file;
-  }
-};
 
 const std::string tetrahedron_vertices = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
 
@@ -297,12 +280,28 @@ TEST(PolyhedralDomain, ConcurrentQueries)
   EXPECT_EQ(serial_inside, parallel_inside);
 }
 
+// OFF files may list vertices that no face uses (prim.off in CGAL's data): the domain drops them,
+// where orient_to_bound_a_volume() dereferenced their null halfedge.
+TEST(PolyhedralDomain, IsolatedVerticesAreRemoved)
+{
+  const Temp_dir dir;
+  const std::string file = dir.write("isolated.off", "OFF\n6 4 0\n0 0 0\n5 5 5\n1 0 0\n0 1 0\n0 0 1\n"
+                                     "6 5 5\n3 0 3 2\n3 0 2 4\n3 0 4 3\n3 2 3 4\n");
+  const Polyhedral_domain d = LM::read_polyhedral_lattice_domain_3<K>(file);
+  EXPECT_EQ(d.surface().number_of_vertices(), 4u);
+  EXPECT_EQ(d.surface().number_of_faces(), 4u);
+  EXPECT_NEAR(d.volume(), 1. / 6., 1e-12);
+  EXPECT_EQ(d.corners().size(), 4u);
+  EXPECT_TRUE(d.is_inside(Point_3(.1, .1, .1)));
+  EXPECT_FALSE(d.is_inside(Point_3(5, 5, 5)));
+}
+
 // ---- polyhedral domain: invalid input -------------------------------------------------------
 
 TEST(PolyhedralDomain, InvalidInput)
 {
   const Temp_dir dir;
-  const std::string missing = (dir.path / "missing.off").string();
+  const std::string missing = dir.path("missing.off");
   expect_error<std::runtime_error>([&] { LM::read_polyhedral_lattice_domain_3<K>(missing); },
                                    {missing, "cannot open"});
 
@@ -339,8 +338,14 @@ TEST(PolyhedralDomain, InvalidInput)
   expect_error<std::invalid_argument>([&] { LM::read_polyhedral_lattice_domain_3<K>(tetrahedron, 181.); },
                                       {"feature angle"});
 
+  // finite coordinates whose volume overflows
+  const std::string huge = dir.write("huge.off", "OFF\n4 4 0\n0 0 0\n1e110 0 0\n0 1e110 0\n0 0 1e110\n"
+                                     "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  expect_error<std::invalid_argument>([&] { LM::read_polyhedral_lattice_domain_3<K>(huge); },
+                                      {huge, "non-finite volume"});
+
   // A binary STL can carry a NaN; text readers reject "nan" as malformed.
-  const std::string nan_file = (dir.path / "nan.stl").string();
+  const std::string nan_file = dir.path("nan.stl");
   {
     const float v[4][3] = {{0, 0, 0}, {1, 0, std::nanf("")}, {0, 1, 0}, {0, 0, 1}};
     const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};

@@ -24,6 +24,9 @@ closest to the query point.
 \cgalHasModel `CGAL::Lattice_mesher_3::Constant_frame_field_3`
 \cgalHasModel `CGAL::Lattice_mesher_3::Function_frame_field_3`
 \cgalHasModel `CGAL::Lattice_mesher_3::Rotation_y_frame_field_3`
+\cgalHasModel `CGAL::Lattice_mesher_3::Planar_layer_frame_field_3`
+\cgalHasModel `CGAL::Lattice_mesher_3::Cylindrical_layer_frame_field_3`
+\cgalHasModel `CGAL::Lattice_mesher_3::Discrete_frame_field_3`
 
 \sa `LatticeMesherTraits_3`
 */

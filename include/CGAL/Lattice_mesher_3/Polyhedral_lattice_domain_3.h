@@ -28,6 +28,7 @@
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
@@ -50,8 +51,9 @@ namespace Lattice_mesher_3 {
 A model of `LatticeMeshDomain_3`: the volume bounded by a closed triangle surface, with the
 sharp edges of the surface as feature curves.
 
-The constructor copies the surface, triangulates polygonal faces, checks that the surface
-bounds a volume (closed, not self-intersecting, positive volume) and orients it outward.
+The constructor copies the surface, removes its isolated vertices, triangulates polygonal
+faces, checks that the surface bounds a volume (closed, not self-intersecting, positive and
+finite volume) and orients it outward.
 Edges whose dihedral angle differs from flat by more than `feature_angle` degrees are sharp
 (`Polygon_mesh_processing::detect_sharp_edges()`). The sharp-edge graph is split into
 polylines with the rule of `Polyhedral_mesh_domain_with_features_3`: a vertex ends a polyline
@@ -199,17 +201,20 @@ private:
     if(!(feature_angle > 0. && feature_angle <= 180.))
       throw std::invalid_argument("feature angle " + std::to_string(feature_angle)
                                   + " is outside (0, 180] degrees");
-    Surface_mesh mesh = input;
-    mesh.collect_garbage(); // dense indices: face normals are stored by face index
-    if(mesh.number_of_faces() == 0)
-      throw std::invalid_argument("the surface has no faces");
-    for(typename Surface_mesh::Vertex_index v : mesh.vertices()) {
-      const Point_3& p = mesh.point(v);
+    for(typename Surface_mesh::Vertex_index v : input.vertices()) { // the indices of the input
+      const Point_3& p = input.point(v);
       if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y()))
          || !std::isfinite(CGAL::to_double(p.z())))
         throw std::invalid_argument("vertex " + std::to_string(std::size_t(v))
                                     + " has a non-finite coordinate");
     }
+    Surface_mesh mesh = input;
+    // An isolated vertex has no halfedge, which orient_to_bound_a_volume() dereferences; OFF
+    // files may list unused vertices.
+    PMP::remove_isolated_vertices(mesh);
+    mesh.collect_garbage(); // dense indices: face normals are stored by face index
+    if(mesh.number_of_faces() == 0)
+      throw std::invalid_argument("the surface has no faces");
     if(!CGAL::is_triangle_mesh(mesh) && !PMP::triangulate_faces(mesh))
       throw std::invalid_argument("some polygonal faces cannot be triangulated");
     std::size_t border_edges = 0;
@@ -223,8 +228,10 @@ private:
       throw std::invalid_argument("the surface self-intersects (or has degenerate faces)");
     // Also handles nested components (cavities), unlike a single is_outward_oriented() test.
     PMP::orient_to_bound_a_volume(mesh);
-    if(!(PMP::volume(mesh) > 0))
-      throw std::invalid_argument("the surface bounds a zero or negative volume");
+    // Coordinates near the limits of double overflow the volume (and the squared distances).
+    const double volume = CGAL::to_double(PMP::volume(mesh));
+    if(!(volume > 0) || !std::isfinite(volume))
+      throw std::invalid_argument("the surface bounds a zero, negative or non-finite volume");
     return mesh;
   }
 
@@ -338,8 +345,8 @@ read_polyhedral_lattice_domain_3(const std::string& filename, double feature_ang
   file.close();
   if(!CGAL::IO::read_polygon_mesh(filename, mesh))
     throw std::runtime_error("'" + filename + "': cannot read a polygon mesh (unsupported "
-                             "extension, non-manifold or malformed data, e.g. a coordinate "
-                             "such as nan)");
+                             "extension, non-manifold or inconsistently oriented faces, or "
+                             "malformed data, e.g. a coordinate such as nan)");
   try {
     return Polyhedral_lattice_domain_3<K>(mesh, feature_angle);
   }

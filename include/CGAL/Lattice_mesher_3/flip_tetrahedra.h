@@ -111,7 +111,7 @@ public:
     const Eigen::Vector3d c = .25 * (p[0] + p[1] + p[2] + p[3]);
     const Eigen::Matrix3d b = isotropic_map_at<Point_3>(field_, c);
     for(Eigen::Vector3d& q : p) q = b * (q - c);
-    return { dihedral_angle_range(p[0], p[1], p[2], p[3]).first,
+    return { smallest_dihedral_angle(p[0], p[1], p[2], p[3]),
              has_shape() ? lattice_shape_energy(p, o_.lattice, o_.edge_length) : 0. };
   }
   bool has_shape() const { return !o_.lattice.one_ring.empty() && o_.edge_length > 0.; }

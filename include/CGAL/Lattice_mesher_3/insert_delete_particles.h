@@ -106,7 +106,7 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
   const std::vector<Vec3> x = internal::to_vectors(ps.points);
   const internal::Particle_frames frames = internal::compute_particle_frames<K>(x, field, o.threads);
   const internal::Point_search_3<K> search(ps.points);
-  const double reach = 1.1 * frames.max_stretch;   // Euclidean radius per unit isotropic radius
+  const double reach = 1.1 * frames.max_stretch;   // Euclidean radius per unit isotropic radius (grids)
 
   struct Candidate { Point_3 p; Particle_kind kind; int feature; double energy; Mat3 B; bool keep; };
   const std::size_t m = offsets.size();
@@ -138,7 +138,7 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
         // with i's neighbours, one search per particle, before any per-candidate search.
         if(around_of != std::ptrdiff_t(i)) {
           around.clear();
-          search.in_sphere(ps.points[i], reach * (offset_radius * l + block), around);
+          internal::search_isotropic_ball(search, x[i], frames.T[i], offset_radius * l + block, frames.max_stretch, around);
           around_of = std::ptrdiff_t(i);
         }
         bool occupied = false;
@@ -163,10 +163,12 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
           q = internal::to_eigen(p);
         }
         cd.p = p;
-        cd.B = internal::isotropic_map(field.frame(p), p);
+        const Mat3 T = field.frame(p);
+        cd.B = internal::isotropic_map(T, p);
         // a candidate that can never be accepted is dropped before its energy is computed
         near.clear();
-        search.in_sphere(p, reach * (std::max)(min_distance, kernel.support_radius() * l), near);
+        internal::search_isotropic_ball(search, q, T, (std::max)(min_distance, kernel.support_radius() * l),
+                                        frames.max_stretch, near);
         double e = 0.;
         bool blocked = false;
         for(std::size_t j : near) {

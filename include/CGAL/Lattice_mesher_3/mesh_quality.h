@@ -209,6 +209,47 @@ inline std::pair<double, double> dihedral_angle_range(const Eigen::Vector3d& a, 
 
 /*!
 \ingroup PkgLatticeMesher3Quality
+Smallest interior dihedral angle (degrees) of the tetrahedron (a, b, c, d): the first of
+`dihedral_angle_range()` with one atan2 instead of two, for the hot loops of flips and smoothing.
+*/
+inline double smallest_dihedral_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                      const Eigen::Vector3d& c, const Eigen::Vector3d& d)
+{
+  const std::array<Eigen::Vector3d, 4> n = internal::face_area_vectors(a, b, c, d);
+  std::array<double, 4> norm;
+  for(int i = 0; i < 4; ++i) norm[i] = n[i].norm();
+  int lo_i = 0, lo_j = 1;
+  double cos_lo = -2.;
+  for(int i = 0; i < 4; ++i)
+    for(int j = i + 1; j < 4; ++j) {
+      const double cosine = -n[i].dot(n[j]) / (norm[i] * norm[j]);
+      if(cosine > cos_lo) { cos_lo = cosine; lo_i = i; lo_j = j; }
+    }
+  return internal::dihedral_angle(n, lo_i, lo_j);
+}
+
+/*!
+\ingroup PkgLatticeMesher3Quality
+Radius ratio rho = sqrt(6) e_min / (4 r_circ) of the tetrahedron (a, b, c, d) (1 for the regular
+one, 0 for a degenerate one).
+*/
+inline double radius_ratio(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                           const Eigen::Vector3d& d)
+{
+  const Eigen::Vector3d u = b - a, v = c - a, w = d - a;
+  const double e_min2 = (std::min)({ u.squaredNorm(), v.squaredNorm(), w.squaredNorm(), (c - b).squaredNorm(),
+                                     (d - b).squaredNorm(), (d - c).squaredNorm() });
+  const double six_volume = std::abs(u.dot(v.cross(w)));
+  if(!(six_volume > 0.)) return 0.;
+  // r_circ = |circumcentre - a| = | |u|^2 v x w + |v|^2 w x u + |w|^2 u x v | / (2 u.(v x w))
+  const double r_circ =
+      (u.squaredNorm() * v.cross(w) + v.squaredNorm() * w.cross(u) + w.squaredNorm() * u.cross(v)).norm() /
+      (2. * six_volume);
+  return std::sqrt(6.) * std::sqrt(e_min2) / (4. * r_circ);
+}
+
+/*!
+\ingroup PkgLatticeMesher3Quality
 Quality of the tetrahedron (a, b, c, d), given in the space where it is measured (the isotropic
 space). The result does not depend on the orientation of the tetrahedron; a degenerate one has
 `rho` = `kappa` = 0.
@@ -224,18 +265,11 @@ inline Tetrahedron_quality_3 tetrahedron_quality(const Eigen::Vector3d& a, const
 
   const Eigen::Vector3d u = b - a, v = c - a, w = d - a;
   const std::array<Eigen::Vector3d, 6> edges = { u, v, w, c - b, d - b, d - c };
-  double e_min2 = u.squaredNorm(), squared_lengths = 0.;
-  for(const Eigen::Vector3d& e : edges) {
-    e_min2 = (std::min)(e_min2, e.squaredNorm());
-    squared_lengths += e.squaredNorm();
-  }
+  double squared_lengths = 0.;
+  for(const Eigen::Vector3d& e : edges) squared_lengths += e.squaredNorm();
   const double six_volume = std::abs(u.dot(v.cross(w)));
   if(six_volume > 0.) {
-    // r_circ = |circumcentre - a| = | |u|^2 v x w + |v|^2 w x u + |w|^2 u x v | / (2 u.(v x w))
-    const double r_circ =
-        (u.squaredNorm() * v.cross(w) + v.squaredNorm() * w.cross(u) + w.squaredNorm() * u.cross(v)).norm() /
-        (2. * six_volume);
-    q.rho = std::sqrt(6.) * std::sqrt(e_min2) / (4. * r_circ);
+    q.rho = radius_ratio(a, b, c, d);
     const double l_rms = std::sqrt(squared_lengths / 6.), a_rms = std::sqrt(squared_areas / 4.);
     q.kappa = 3. * std::sqrt(6.) * (six_volume / 6.) / (2. * l_rms * a_rms);
   }

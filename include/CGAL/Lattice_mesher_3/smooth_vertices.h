@@ -70,7 +70,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
   auto tet_quality = [&](std::size_t t, int moved, const Point_3& at) {
     std::array<Eigen::Vector3d, 4> p;
     for(int i = 0; i < 4; ++i) p[i] = maps[t] * internal::to_eigen(mesh.tets[t][i] == moved ? at : mesh.points[mesh.tets[t][i]]);
-    return tetrahedron_quality(p[0], p[1], p[2], p[3]);
+    return std::make_pair(smallest_dihedral_angle(p[0], p[1], p[2], p[3]), radius_ratio(p[0], p[1], p[2], p[3]));
   };
   // The star of v with v at `at`, scored by the sum over its tetrahedra of (target - angle)^2
   // for smallest angles below the target: a worst angle raised by a few degrees at the price of
@@ -85,10 +85,10 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
       std::array<Point_3, 4> p;
       for(int i = 0; i < 4; ++i) p[i] = tv[i] == v ? at : mesh.points[tv[i]];
       if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) return Score{ HUGE_VAL, -1. };
-      const Tetrahedron_quality_3 q = tet_quality(std::size_t(t), v, at);
-      s.worst = (std::min)(s.worst, q.theta_min);
-      s.penalty += CGAL::square((std::max)(0., o.target_angle - q.theta_min))
-                 + CGAL::square(o.radius_ratio_weight * (std::max)(0., o.target_radius_ratio - q.rho));
+      const std::pair<double, double> q = tet_quality(std::size_t(t), v, at);   // angle, radius ratio
+      s.worst = (std::min)(s.worst, q.first);
+      s.penalty += CGAL::square((std::max)(0., o.target_angle - q.first))
+                 + CGAL::square(o.radius_ratio_weight * (std::max)(0., o.target_radius_ratio - q.second));
       if(s.penalty > bound) return Score{ HUGE_VAL, -1. };
     }
     return s;
@@ -146,7 +146,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     }
     std::vector<char> selected(mesh.points.size(), 0);
     for(std::size_t t = 0; t < mesh.tets.size(); ++t)
-      if(tet_quality(t, -1, mesh.points[0]).theta_min < o.select_angle)
+      if(tet_quality(t, -1, mesh.points[0]).first < o.select_angle)
         for(int v : mesh.tets[t]) selected[v] = mesh.vertex_kinds[v] != Particle_kind::FIXED;
     // Greedy colouring: vertices of one colour share no tetrahedron, so their stars are moved in
     // parallel with the same result for any number of threads.

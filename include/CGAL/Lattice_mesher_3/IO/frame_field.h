@@ -106,11 +106,13 @@ inline bool frame_from_metric(const double m[6], Eigen::Matrix3d& t, Eigen::Vect
 }
 
 // The frames of a Medit .sol file, one per point: a "SolAtVertices" section with one field of
-// type 4 (9 values: T row by row) or 3 (6 values: a metric M, T = M^(-1/2)).
+// type 4 (9 values: T row by row) or 3 (6 values: a metric M, T = M^(-1/2)). The errors start
+// with `where`.
 template <typename Point_3>
-std::vector<Eigen::Matrix3d> read_sol_frames(std::istream& is, const std::vector<Point_3>& points)
+std::vector<Eigen::Matrix3d> read_sol_frames(std::istream& is, const std::vector<Point_3>& points,
+                                             const std::string& where)
 {
-  Medit_tokenizer in(is);
+  Medit_tokenizer in(is, where);
   std::vector<Eigen::Matrix3d> frames;
   std::string keyword;
   if(!in.next(keyword) || keyword != "MeshVersionFormatted")
@@ -273,12 +275,10 @@ Discrete_frame_field_3<GT> read_frame_field_from_medit(const std::string& mesh_f
   }
   std::ifstream is = internal::open_input_file(function, data_file);
   std::vector<typename GT::Matrix_3> frames;
-  if(internal::starts_like_medit(is)) {
-    try { frames = internal::read_sol_frames(is, mesh.points); }
-    catch(const std::exception& e) { throw std::runtime_error(function + ": '" + data_file + "': " + e.what()); }
-  } else {
+  if(internal::starts_like_medit(is))
+    frames = internal::read_sol_frames(is, mesh.points, function + ": '" + data_file + "'");
+  else
     frames = internal::read_plain_frames(is, mesh.points, function, data_file);
-  }
   return Discrete_frame_field_3<GT>(std::move(mesh.points), std::move(frames));
 }
 

@@ -62,11 +62,12 @@ void write_medit(std::ostream& os, const Tetrahedral_mesh_3<Point_3>& mesh)
 namespace internal {
 
 // Whitespace-separated tokens of a Medit file, without '#' comments, with line numbers for
-// the error messages.
+// the error messages, which start with `where`: the name of the reading function, and the
+// file's if it knows it.
 class Medit_tokenizer
 {
 public:
-  explicit Medit_tokenizer(std::istream& is) : is_(is) {}
+  Medit_tokenizer(std::istream& is, std::string where) : is_(is), where_(std::move(where)) {}
 
   // false at the end of the file
   bool next(std::string& token)
@@ -84,7 +85,7 @@ public:
   [[noreturn]] void fail(const std::string& what) const
   {
     std::ostringstream os;
-    os << "read_medit(): " << what << " (line " << line_number_ << ")";
+    os << where_ << ": " << what << " (line " << line_number_ << ")";
     throw std::runtime_error(os.str());
   }
 
@@ -131,6 +132,7 @@ public:
 
 private:
   std::istream& is_;
+  std::string where_;
   std::istringstream line_;
   int line_number_ = 0;
 };
@@ -165,7 +167,7 @@ section, or an index out of range
 template <typename Point_3>
 void read_medit(std::istream& is, Tetrahedral_mesh_3<Point_3>& mesh)
 {
-  internal::Medit_tokenizer in(is);
+  internal::Medit_tokenizer in(is, "read_medit()");
   const long long max_count = std::numeric_limits<int>::max();
   Tetrahedral_mesh_3<Point_3> result;
   std::vector<long long> vertex_refs;

@@ -12,6 +12,7 @@
 
 #include <CGAL/Lattice_mesher_3/frame_fields.h>
 
+#include <CGAL/Fuzzy_iso_box.h>
 #include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
@@ -45,6 +46,7 @@ class Point_search_3
   typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Base_traits> Traits;
   typedef CGAL::Kd_tree<Traits> Tree;
   typedef CGAL::Fuzzy_sphere<Traits> Sphere;
+  typedef CGAL::Fuzzy_iso_box<Traits> Box;
   typedef CGAL::Orthogonal_k_neighbor_search<Traits> Knn;
 
 public:
@@ -63,6 +65,19 @@ public:
     tree_.search(std::back_inserter(out), Sphere(c, radius, 0., tree_.traits()));
   }
 
+  /// appends the indices of the points in the axis-aligned box `c` +- `half` or in the ball of
+  /// radius `radius` around `c`, whichever is smaller (the box under a stretched frame, the
+  /// ball, 5 times smaller than its box, under a rotation)
+  void in_box_or_sphere(const Vec3& c, const Vec3& half, double radius, std::vector<std::size_t>& out) const
+  {
+    if(points_.empty()) return;
+    const Point_3 center(c[0], c[1], c[2]);
+    if(8. * half[0] * half[1] * half[2] > 4.19 * radius * radius * radius)
+      return in_sphere(center, radius, out);
+    const Point_3 lo(c[0] - half[0], c[1] - half[1], c[2] - half[2]), hi(c[0] + half[0], c[1] + half[1], c[2] + half[2]);
+    tree_.search(std::back_inserter(out), Box(lo, hi, 0., tree_.traits()));
+  }
+
   /// index of the nearest point, and its squared distance
   std::pair<std::size_t, double> nearest(const Point_3& c) const
   {
@@ -76,6 +91,24 @@ private:
   std::vector<Point_3> points_;
   Tree tree_;
 };
+
+// Half-widths of the axis-aligned box around the isotropic ball of radius r under the frame T
+// (the ball maps to an ellipsoid whose extent along axis a is r |row a of T|), widened by
+// `slack` for a field that varies within the ball. Under a stretched field the Euclidean ball
+// covering the largest stretch holds many times the particles it needs (80 times at fig8's peak).
+inline Vec3 reach_box(const Mat3& t, double r, double slack = 1.5)
+{
+  return slack * r * Vec3(t.row(0).norm(), t.row(1).norm(), t.row(2).norm());
+}
+
+// The search region of an isotropic ball of radius r at a particle with frame t: its box, or
+// the Euclidean ball covering r under the largest stretch of the field (x1.1), the smaller.
+template <typename K>
+void search_isotropic_ball(const Point_search_3<K>& search, const Vec3& c, const Mat3& t, double r,
+                           double max_stretch, std::vector<std::size_t>& out)
+{
+  search.in_box_or_sphere(c, reach_box(t, r), 1.1 * max_stretch * r, out);
+}
 
 // Frames of the particles: T_i, B_i = T_i^-1, and the largest stretch of any T_i.
 struct Particle_frames
@@ -137,34 +170,38 @@ Neighbor_graph build_neighbor_graph(const std::vector<Vec3>& x, const Particle_f
   for(std::size_t i = 0; i < n; ++i) pts[i] = Point_3(x[i][0], x[i][1], x[i][2]);
   const Point_search_3<K> search(pts);
 
-  // Euclidean radius covering iso_radius under the largest stretch (x1.1 for midpoints whose
-  // frame stretches more than any particle's); then filtered by |B_ij v| <= iso_radius.
-  const double query_radius = 1.1 * frames.max_stretch * iso_radius;
-  std::vector<std::vector<std::pair<int, Mat3> > > upper(n);   // j > i
-  bool failed = false;
-  std::string what;
+  // Each particle finds candidates in the search region of its isotropic ball; a pair is kept
+  // if either finds the other and |B_ij v| <= iso_radius, its B evaluated once, by the smaller
+  // particle that found it.
+  std::vector<std::vector<int> > candidates(n);
 #pragma omp parallel num_threads(threads)
   {
     std::vector<std::size_t> found;
 #pragma omp for schedule(dynamic, 256)
-    for(std::ptrdiff_t ii = 0; ii < std::ptrdiff_t(n); ++ii) {
-      const std::size_t i = std::size_t(ii);
+    for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i) {
       found.clear();
-      search.in_sphere(pts[i], query_radius, found);
-      std::sort(found.begin(), found.end());
-      try {
-        for(std::size_t j : found) {
-          if(j <= i) continue;
-          const Vec3 v = x[i] - x[j];
-          const Point_3 m(0.5 * (x[i][0] + x[j][0]), 0.5 * (x[i][1] + x[j][1]), 0.5 * (x[i][2] + x[j][2]));
-          const Mat3 b = isotropic_map(field.frame(m), m);
-          if((b * v).squaredNorm() <= iso_radius * iso_radius)
-            upper[i].emplace_back(int(j), b);
-        }
-      } catch(const std::exception& e) {
-#pragma omp critical(lattice_mesher_3_neighbors)
-        { if(!failed) { failed = true; what = e.what(); } }
+      search_isotropic_ball(search, x[i], frames.T[i], iso_radius, frames.max_stretch, found);
+      for(std::size_t j : found) if(j != std::size_t(i)) candidates[i].push_back(int(j));
+      std::sort(candidates[i].begin(), candidates[i].end());
+    }
+  }
+  std::vector<std::vector<std::pair<int, Mat3> > > kept(n);   // (j, B_ij), evaluated by i
+  bool failed = false;
+  std::string what;
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 256)
+  for(std::ptrdiff_t ii = 0; ii < std::ptrdiff_t(n); ++ii) {
+    const int i = int(ii);
+    try {
+      for(int j : candidates[i]) {
+        if(j < i && std::binary_search(candidates[j].begin(), candidates[j].end(), i)) continue;
+        const Vec3 v = x[i] - x[j];
+        const Point_3 m(0.5 * (x[i][0] + x[j][0]), 0.5 * (x[i][1] + x[j][1]), 0.5 * (x[i][2] + x[j][2]));
+        const Mat3 b = isotropic_map(field.frame(m), m);
+        if((b * v).squaredNorm() <= iso_radius * iso_radius) kept[i].emplace_back(j, b);
       }
+    } catch(const std::exception& e) {
+#pragma omp critical(lattice_mesher_3_neighbors)
+      { if(!failed) { failed = true; what = e.what(); } }
     }
   }
   if(failed) throw std::domain_error(what);
@@ -172,7 +209,10 @@ Neighbor_graph build_neighbor_graph(const std::vector<Vec3>& x, const Particle_f
   Neighbor_graph g;
   std::vector<int> degree(n, 0);
   for(std::size_t i = 0; i < n; ++i)
-    for(const auto& e : upper[i]) { ++degree[i]; ++degree[e.first]; g.pairs.push_back({int(i), e.first}); g.pair_map.push_back(e.second); }
+    for(const auto& e : kept[i]) {
+      const int a = (std::min)(int(i), e.first), b = (std::max)(int(i), e.first);
+      ++degree[a]; ++degree[b]; g.pairs.push_back({a, b}); g.pair_map.push_back(e.second);
+    }
   g.offsets.assign(n + 1, 0);
   for(std::size_t i = 0; i < n; ++i) g.offsets[i + 1] = g.offsets[i] + degree[i];
   g.neighbor.resize(g.offsets[n]);
