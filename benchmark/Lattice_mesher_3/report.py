@@ -48,7 +48,7 @@ COLUMNS = [
     ("time (s)", ("seconds", "total"), 2), ("peak RSS (MB)", ("peak_rss_mb",), 1),
 ]
 HISTOGRAMS = [("dihedral", "dihedral angle (°)", (0, 180)), ("rho", "ρ", (0, 1)),
-              ("kappa", "κ", (0, 1)), ("epsilon", "ε (°), against the BCC one-ring", (0, 45))]
+              ("kappa", "κ", (0, 1)), ("epsilon", "ε (°), against the method's lattice one-ring", (0, 45))]
 
 NOTES = """- Every method meshes the same validated surface (closed, not self-intersecting) to about the
   target vertex count: its size parameter (ours: the requested count; Mesh_3: one size for cells,
@@ -63,7 +63,7 @@ NOTES = """- Every method meshes the same validated surface (closed, not self-in
   the sliver perturber and exuder (the paper's rows), "+ perturb + exude" rows with CGAL's
   defaults, as a CGAL user runs it. Particle2013: our pipeline with the hole-less Gaussian kernel.
 - Every mesh is measured by `compute_mesh_quality()` with the identity field; ε is measured
-  against the BCC one-ring for every method (so FCC's face-diagonal edges count as misaligned).
+  against the FCC one-ring for ours with FCC and against the BCC one-ring for every other method.
   ‡ marks a mesh that fails `check_tetrahedral_mesh()` (see its log)."""
 
 
