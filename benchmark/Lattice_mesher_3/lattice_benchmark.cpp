@@ -434,7 +434,7 @@ static void report(const Method& m, const Input& in, const Run& run, const std::
 
   write_file(o.out, [&](std::ostream& os) { LM::write_medit(os, run.mesh); });
   write_file(o.stats, [&](std::ostream& os) { write_json(os, q, m, in, run, validity.valid(), tried, o); });
-  write_file(o.histograms, [&](std::ostream& os) { LM::write_quality_histograms_csv(os, run.mesh, field, bcc); });
+  write_file(o.histograms, [&](std::ostream& os) { LM::write_quality_histograms_csv(os, run.mesh, field, lattice); });
 }
 
 // One attempt, in a child process: meshes at `size`; if the count is within the tolerance or the
