@@ -215,11 +215,13 @@ public:
     Lattice_mesher_3::Flip_options fo;
     if(lattice_.has_holes()) { fo.lattice = lattice_; fo.edge_length = p_.edge_length; }
     if(p_.flip) Lattice_mesher_3::flip_tetrahedra(mesh, field_, fo);
+    // smoothing moves vertices by a fraction of an edge: the connectivity already follows the
+    // field, only the worst tetrahedra are flipped again
     Lattice_mesher_3::Smoothing_options so;
     so.threads = p_.threads;
     for(int round = 0; round < p_.smoothing_rounds; ++round) {
       if(Lattice_mesher_3::smooth_vertices(mesh, domain_, field_, so) == 0) break;
-      if(p_.flip) Lattice_mesher_3::flip_tetrahedra(mesh, field_, fo);
+      if(p_.flip) Lattice_mesher_3::flip_tetrahedra(mesh, field_);
     }
     return mesh;
   }
