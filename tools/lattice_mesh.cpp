@@ -8,6 +8,8 @@
 // lattice-mesh: meshes a closed surface file or a built-in shape with a field-aligned BCC/FCC
 // lattice, prints progress and the quality table, and writes Medit, VTU and JSON statistics.
 
+#include "command_line.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Lattice_particle_mesher_3.h>
 #include <CGAL/Lattice_mesher_3/Discrete_frame_field_3.h>
@@ -80,48 +82,32 @@ struct Options
   int smoothing_rounds = 2;
 };
 
-static double to_number(const std::string& flag, const std::string& v)
-{
-  std::size_t used = 0;
-  double x = 0.;
-  try { x = std::stod(v, &used); } catch(const std::exception&) { used = 0; }
-  if(used != v.size() || !std::isfinite(x))
-    throw std::invalid_argument(flag + " expects a number, got '" + v + "'");
-  return x;
-}
-
 static Options parse(int argc, char** argv)
 {
   Options o;
-  for(int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if(i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
-      return argv[++i];
-    };
+  command_line::Arguments args(argc, argv);
+  for(std::string a; args.next(a);) {
     if(a == "-h" || a == "--help") { std::cout << usage; std::exit(0); }
-    else if(a == "--domain") o.domain = value();
-    else if(a == "--lattice") o.lattice = value();
-    else if(a == "--edge-length") o.edge_length = to_number(a, value());
-    else if(a == "--vertices") o.vertices = to_number(a, value());
-    else if(a == "--field") o.field = value();
-    else if(a == "--field-data") o.field_data = value();
-    else if(a == "--write-field") o.write_field = value();
-    else if(a == "--field-spacing") o.field_spacing = to_number(a, value());
-    else if(a == "--feature-angle") o.feature_angle = to_number(a, value());
-    else if(a == "--seed") o.seed = (unsigned int)to_number(a, value());
-    else if(a == "--threads") o.threads = int(to_number(a, value()));
-    else if(a == "--coarse-levels") o.coarse_levels = int(to_number(a, value()));
-    else if(a == "--max-rounds") o.max_rounds = int(to_number(a, value()));
-    else if(a == "-o" || a == "--output") o.out = value();
-    else if(a == "--vtu") o.vtu = value();
-    else if(a == "--stats") o.stats = value();
+    else if(a == "--domain") o.domain = args.value(a);
+    else if(a == "--lattice") o.lattice = args.value(a);
+    else if(a == "--edge-length") o.edge_length = args.number(a);
+    else if(a == "--vertices") o.vertices = args.number(a);
+    else if(a == "--field") o.field = args.value(a);
+    else if(a == "--field-data") o.field_data = args.value(a);
+    else if(a == "--write-field") o.write_field = args.value(a);
+    else if(a == "--field-spacing") o.field_spacing = args.number(a);
+    else if(a == "--feature-angle") o.feature_angle = args.number(a);
+    else if(a == "--seed") o.seed = (unsigned int)args.number(a);
+    else if(a == "--threads") o.threads = int(args.number(a));
+    else if(a == "--coarse-levels") o.coarse_levels = int(args.number(a));
+    else if(a == "--max-rounds") o.max_rounds = int(args.number(a));
+    else if(a == "-o" || a == "--output") o.out = args.value(a);
+    else if(a == "--vtu") o.vtu = args.value(a);
+    else if(a == "--stats") o.stats = args.value(a);
     else if(a == "--quiet") o.quiet = true;
     else if(a == "--no-flips") o.flip = false;
-    else if(a == "--smoothing-rounds") o.smoothing_rounds = int(to_number(a, value()));
-    else if(!a.empty() && a[0] == '-') throw std::invalid_argument("unknown option " + a);
-    else if(o.input.empty()) o.input = a;
-    else throw std::invalid_argument("more than one input file: '" + o.input + "' and '" + a + "'");
+    else if(a == "--smoothing-rounds") o.smoothing_rounds = int(args.number(a));
+    else command_line::Arguments::positional(a, o.input);
   }
   if(o.input.empty() == o.domain.empty())
     throw std::invalid_argument("give either an input surface file or --domain cube|cube11|sphere|torus");

@@ -9,6 +9,8 @@
 // vertices and measures the result with the package's quality function, plus wall time and
 // peak memory. One method per run of the program: the peak RSS is that method's.
 
+#include "../../tools/command_line.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/lattice_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/IO/medit.h>
@@ -493,38 +495,22 @@ static std::size_t in_child_process(const F& f)
   return n;
 }
 
-static double to_number(const std::string& flag, const std::string& v)
-{
-  std::size_t used = 0;
-  double x = 0.;
-  try { x = std::stod(v, &used); } catch(const std::exception&) { used = 0; }
-  if(used != v.size() || !std::isfinite(x))
-    throw std::invalid_argument(flag + " expects a number, got '" + v + "'");
-  return x;
-}
-
 static Options parse(int argc, char** argv)
 {
   Options o;
-  for(int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if(i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
-      return argv[++i];
-    };
+  command_line::Arguments args(argc, argv);
+  for(std::string a; args.next(a);) {
     if(a == "-h" || a == "--help") { std::cout << usage; std::exit(EXIT_SUCCESS); }
-    else if(a == "--domain") o.domain = value();
-    else if(a == "--method") o.method = value();
-    else if(a == "--vertices") o.vertices = to_number(a, value());
-    else if(a == "--threads") o.threads = int(to_number(a, value()));
-    else if(a == "--seed") o.seed = (unsigned int)to_number(a, value());
+    else if(a == "--domain") o.domain = args.value(a);
+    else if(a == "--method") o.method = args.value(a);
+    else if(a == "--vertices") o.vertices = args.number(a);
+    else if(a == "--threads") o.threads = int(args.number(a));
+    else if(a == "--seed") o.seed = (unsigned int)args.number(a);
     else if(a == "--no-tuning") o.tune = false;
-    else if(a == "-o" || a == "--output") o.out = value();
-    else if(a == "--stats") o.stats = value();
-    else if(a == "--histograms") o.histograms = value();
-    else if(!a.empty() && a[0] == '-') throw std::invalid_argument("unknown option " + a);
-    else if(o.input.empty()) o.input = a;
-    else throw std::invalid_argument("more than one input file: '" + o.input + "' and '" + a + "'");
+    else if(a == "-o" || a == "--output") o.out = args.value(a);
+    else if(a == "--stats") o.stats = args.value(a);
+    else if(a == "--histograms") o.histograms = args.value(a);
+    else command_line::Arguments::positional(a, o.input);
   }
   if(o.input.empty() == o.domain.empty()) throw std::invalid_argument("give either an input surface file or --domain cube");
   if(!o.domain.empty() && o.domain != "cube") throw std::invalid_argument("unknown domain '" + o.domain + "' (expected cube)");
