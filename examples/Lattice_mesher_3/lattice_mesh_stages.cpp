@@ -110,7 +110,7 @@ int main()
                 kinds[0], kinds[1], kinds[2], kinds[3]);
 
     // 4. Tetrahedralization: the Delaunay tetrahedralization restricted to the domain.
-    LM::Tetrahedral_mesh_3<Point_3> mesh = LM::tetrahedralize_particles(particles, domain);
+    LM::Tetrahedral_mesh_3<Point_3> mesh = LM::tetrahedralize_particles(particles, domain, field);
 
     // 5. Improvement of the worst tetrahedra in the isotropic space: flips, then vertex moves.
     const LM::Flip_result flips = LM::flip_tetrahedra(mesh, field);

@@ -210,7 +210,8 @@ public:
   {
     Lattice_mesher_3::Tetrahedralization_options o;
     o.threads = p_.threads;
-    Mesh mesh = Lattice_mesher_3::tetrahedralize_particles(particles_, domain_, o);
+    o.edge_length = p_.edge_length;
+    Mesh mesh = Lattice_mesher_3::tetrahedralize_particles(particles_, domain_, field_, o);
     // the shape-matching flips need a lattice to match: not for the hole-less kernel
     Lattice_mesher_3::Flip_options fo;
     if(lattice_.has_holes()) { fo.lattice = lattice_; fo.edge_length = p_.edge_length; }

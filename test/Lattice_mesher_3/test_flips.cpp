@@ -51,7 +51,7 @@ LM::Tetrahedral_mesh_3<Point_3> jittered_mesh(unsigned int seed)
     ps.push_back(p, on == 3 ? LM::Particle_kind::FIXED : on == 2 ? LM::Particle_kind::SHARP_EDGE
                    : on == 1 ? LM::Particle_kind::BOUNDARY : LM::Particle_kind::FREE);
   }
-  return LM::tetrahedralize_particles(ps, unit_cube());
+  return LM::tetrahedralize_particles(ps, unit_cube(), LM::Constant_frame_field_3<Traits>());
 }
 
 double worst_angle(const LM::Tetrahedral_mesh_3<Point_3>& mesh, const LM::Constant_frame_field_3<Traits>& field)

@@ -141,7 +141,7 @@ TEST(Lattice_mesh_3, StagesAsNamedParameterFunctions)
   const std::size_t inserted = LM::insert_particles(ps, cube(), field, np);
   EXPECT_EQ(ps.size(), before - deleted + inserted);
   EXPECT_GT(deleted + inserted, 0u);
-  const auto mesh = LM::tetrahedralize_particles(ps, cube(), CGAL::parameters::number_of_threads(2));
+  const auto mesh = LM::tetrahedralize_particles(ps, cube(), field, np);
   EXPECT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
   expect_error([&] { LM::optimize_particles_round(ps, cube(), field, CGAL::parameters::number_of_threads(2)); }, { "edge_length" });
 }

@@ -124,14 +124,6 @@ private:
   Eigen::VectorXd best_U_;
 };
 
-template <typename Point_3>
-std::vector<Vec3> to_vectors(const std::vector<Point_3>& points)
-{
-  std::vector<Vec3> x(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i) x[i] = to_eigen(points[i]);
-  return x;
-}
-
 // The maps M_i = P_i T_i of Particle_energy_3: P_i projects on the constraint of particle i
 // (its edge tangent, its tangent plane; 0 if fixed).
 template <typename Domain, typename Point_3>

@@ -11,6 +11,8 @@
 #define CGAL_LATTICE_MESHER_3_TETRAHEDRALIZE_PARTICLES_H
 
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
+#include <CGAL/Lattice_mesher_3/internal/field_sampling.h>
+#include <CGAL/Lattice_mesher_3/internal/isotropic_embedding.h>
 #include <CGAL/Lattice_mesher_3/internal/stage_parameters.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
@@ -35,29 +37,20 @@ struct Tetrahedralization_options
   /// A cell whose vertices all lie on the boundary is kept only if its centroid is at least this
   /// fraction of its mean edge length inside: flat cells spanning a face add no volume, only slivers.
   double flat_cell_ratio = 0.1;
+  /// l*, which sets the neighbourhood (1.3 l*) of the isotropic embedding under a varying
+  /// stretch; 0: estimated from the number of particles and the isotropic volume
+  double edge_length = 0.;
   int threads = 1;
 };
 
-/*!
-\ingroup PkgLatticeMesher3Tetrahedralization
+namespace internal {
 
-Connects particles into a tetrahedral mesh: the Delaunay tetrahedralization of all particles
-(CGAL `Delaunay_triangulation_3`, exact predicates), restricted to the domain by keeping the
-cells whose centroid is inside it; cells whose four vertices are boundary particles and whose
-centroid lies within `flat_cell_ratio` x their mean edge length of the boundary are dropped
-(they would be slivers lying on the surface). The boundary is then repaired into a closed
-2-manifold: cells are removed around non-manifold edges and vertices until none remains.
-Particles that end up in no tetrahedron are not output. The tetrahedra are positively
-oriented and `boundary_faces` are oriented outward.
-
-Delaunay rather than TetGen's constrained tetrahedralization: the boundary particles lie on
-the surface and the interior ones at least 0.3 l* inside, so the restricted Delaunay complex
-already conforms to the boundary; CGAL's triangulation is exact and robust on degenerate
-(cospherical lattice) input, on which TetGen 1.5 may crash, and it keeps the package GPL.
-*/
+// The Delaunay tetrahedralization of the particles placed at y, restricted to the domain and
+// repaired (see tetrahedralize_particles()); every geometric test but the Delaunay one is on
+// the particles' own positions.
 template <typename Domain, typename Point_3>
-Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_3>& ps, const Domain& domain,
-                                                     const Tetrahedralization_options& o)
+Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& ps, const std::vector<Vec3>& y,
+                                                const Domain& domain, const Tetrahedralization_options& o)
 {
   typedef typename Domain::Geom_traits K;
   typedef CGAL::Triangulation_vertex_base_with_info_3<int, K> Vb;
@@ -67,13 +60,12 @@ Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_
   typedef typename Dt::Cell_handle Cell_handle;
   typedef typename Dt::Vertex_handle Vertex_handle;
 
-  if(ps.size() < 4)
-    throw std::invalid_argument("tetrahedralize_particles(): fewer than 4 particles");
-  std::vector<std::pair<Point_3, int> > input(ps.size());
-  for(std::size_t i = 0; i < ps.size(); ++i) input[i] = { ps.points[i], int(i) };
+  std::vector<std::pair<typename K::Point_3, int> > input(ps.size());
+  for(std::size_t i = 0; i < ps.size(); ++i) input[i] = { typename K::Point_3(y[i][0], y[i][1], y[i][2]), int(i) };
   Dt dt(input.begin(), input.end());
   if(dt.dimension() < 3)
     throw std::invalid_argument("tetrahedralize_particles(): the particles are coplanar");
+  auto P = [&](Vertex_handle v) -> const Point_3& { return ps.points[v->info()]; };
 
   auto on_boundary = [&](Vertex_handle v) { return ps.kinds[v->info()] != Particle_kind::FREE; };
 
@@ -83,14 +75,13 @@ Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_
 #pragma omp parallel for num_threads(o.threads) schedule(dynamic, 256)
   for(std::ptrdiff_t k = 0; k < std::ptrdiff_t(cells.size()); ++k) {
     const Cell_handle c = cells[k];
-    const Point_3 g = CGAL::centroid(c->vertex(0)->point(), c->vertex(1)->point(),
-                                     c->vertex(2)->point(), c->vertex(3)->point());
+    const Point_3 g = CGAL::centroid(P(c->vertex(0)), P(c->vertex(1)), P(c->vertex(2)), P(c->vertex(3)));
     char inside = domain.is_inside(g) ? 1 : 0;
     if(inside && on_boundary(c->vertex(0)) && on_boundary(c->vertex(1)) &&
        on_boundary(c->vertex(2)) && on_boundary(c->vertex(3))) {
       double mean_edge = 0.;
       for(int i = 0; i < 4; ++i) for(int j = i + 1; j < 4; ++j)
-        mean_edge += std::sqrt(CGAL::to_double((c->vertex(i)->point() - c->vertex(j)->point()).squared_length()));
+        mean_edge += std::sqrt(CGAL::to_double(CGAL::squared_distance(P(c->vertex(i)), P(c->vertex(j)))));
       mean_edge /= 6.;
       if(std::sqrt(domain.project_on_surface(g).squared_distance) < o.flat_cell_ratio * mean_edge) inside = 0;
     }
@@ -176,23 +167,79 @@ Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_
       // (a, b, c) with the cell's own vertex d behind it: orientation(a, b, c, d) is negative
       // for the outward normal
       int a = (i + 1) & 3, b = (i + 2) & 3, d3 = (i + 3) & 3;
-      if(CGAL::orientation(c->vertex(a)->point(), c->vertex(b)->point(), c->vertex(d3)->point(),
-                           c->vertex(i)->point()) != CGAL::NEGATIVE) std::swap(a, b);
+      if(CGAL::orientation(P(c->vertex(a)), P(c->vertex(b)), P(c->vertex(d3)), P(c->vertex(i))) != CGAL::NEGATIVE)
+        std::swap(a, b);
       mesh.boundary_faces.push_back({ vid(c->vertex(a)), vid(c->vertex(b)), vid(c->vertex(d3)) });
     }
   }
   return mesh;
 }
 
-/// \ingroup PkgLatticeMesher3Tetrahedralization
-/// `tetrahedralize_particles()` with the named parameter `number_of_threads` (default 1).
-template <typename Domain, typename Point_3, typename NamedParameters = parameters::Default_named_parameters>
+} // namespace internal
+
+/*!
+\ingroup PkgLatticeMesher3Tetrahedralization
+
+Connects particles into a tetrahedral mesh: the Delaunay tetrahedralization of all particles
+(CGAL `Delaunay_triangulation_3`, exact predicates) in the isotropic space of the field,
+restricted to the domain by keeping the cells whose centroid is inside it; cells whose four
+vertices are boundary particles and whose centroid lies within `flat_cell_ratio` x their mean
+edge length of the boundary are dropped (they would be slivers lying on the surface). The
+boundary is then repaired into a closed 2-manifold: cells are removed around non-manifold edges
+and vertices until none remains. Particles that end up in no tetrahedron are not output. The
+tetrahedra are positively oriented and `boundary_faces` are oriented outward.
+
+The isotropic space is where the field's metric B^T B is Euclidean: the particles themselves
+under a cross field or a constant frame, and under a varying stretch the least-squares
+embedding of their isotropic neighbour vectors (exact when the metric is flat, as fig8's).
+Should that embedding fold a kept cell over in the physical space (a strongly curved metric),
+the Euclidean Delaunay tetrahedralization is used instead, and the flips must then do all the
+work.
+
+Delaunay rather than TetGen's constrained tetrahedralization: the boundary particles lie on
+the surface and the interior ones at least 0.3 l* inside, so the restricted Delaunay complex
+already conforms to the boundary; CGAL's triangulation is exact and robust on degenerate
+(cospherical lattice) input, on which TetGen 1.5 may crash, and it keeps the package GPL.
+*/
+template <typename Domain, typename FrameField, typename Point_3>
 Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_3>& ps, const Domain& domain,
+                                                     const FrameField& field, const Tetrahedralization_options& o)
+{
+  typedef typename Domain::Geom_traits K;
+  if(ps.size() < 4)
+    throw std::invalid_argument("tetrahedralize_particles(): fewer than 4 particles");
+  const std::vector<internal::Vec3> x = internal::to_vectors(ps.points);
+  double l = o.edge_length;
+  if(!(l > 0.)) {   // the cube edge of the sparsest lattice (FCC) for this many particles
+    const double iso_volume = domain.volume() * internal::sample_det_b(domain, field, 4096).mean;
+    l = std::cbrt(4. * iso_volume / double(ps.size()));
+  }
+  bool uniform = true;
+  const std::vector<internal::Vec3> y = internal::isotropic_embedding<K>(x, field, 1.3 * l, o.threads, uniform);
+  Tetrahedral_mesh_3<Point_3> mesh = internal::restricted_delaunay(ps, y, domain, o);
+  if(!uniform && !mesh.tets.empty()) {
+    bool folded = false;
+    for(const auto& t : mesh.tets)
+      folded = folded || CGAL::orientation(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], mesh.points[t[3]]) != CGAL::POSITIVE;
+    if(folded) mesh = internal::restricted_delaunay(ps, x, domain, o);
+  }
+  return mesh;
+}
+
+
+/// \ingroup PkgLatticeMesher3Tetrahedralization
+/// `tetrahedralize_particles()` with the named parameters `edge_length` (default 0: estimated)
+/// and `number_of_threads` (default 1).
+template <typename Domain, typename FrameField, typename Point_3,
+          typename NamedParameters = parameters::Default_named_parameters>
+Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_3>& ps, const Domain& domain,
+                                                     const FrameField& field,
                                                      const NamedParameters& np = parameters::default_values())
 {
   Tetrahedralization_options o;
+  o.edge_length = parameters::choose_parameter(parameters::get_parameter(np, internal_np::edge_length), 0.);
   o.threads = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_threads), 1);
-  return tetrahedralize_particles(ps, domain, o);
+  return tetrahedralize_particles(ps, domain, field, o);
 }
 
 } // namespace Lattice_mesher_3

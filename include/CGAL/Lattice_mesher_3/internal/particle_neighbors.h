@@ -36,6 +36,14 @@ namespace internal {
 typedef Eigen::Vector3d Vec3;
 typedef Eigen::Matrix3d Mat3;
 
+template <typename Point_3>
+std::vector<Vec3> to_vectors(const std::vector<Point_3>& points)
+{
+  std::vector<Vec3> x(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i) x[i] = to_eigen(points[i]);
+  return x;
+}
+
 // k-d tree over a fixed array of points, answering queries by index.
 template <typename K>
 class Point_search_3
