@@ -104,8 +104,11 @@ public:
     for(const std::array<int, 4>& t : mesh.tets) add(t, measure(t));
   }
 
+  // An inverted tetrahedron (only given ones: flips create none) measures -1 degree and a huge
+  // shape energy, so that both criteria take any flip that removes it.
   Flip_measure measure(const std::array<int, 4>& t) const
   {
+    if(orientation(t[0], t[1], t[2], t[3]) != CGAL::POSITIVE) return { -1., 1e6 };
     std::array<Eigen::Vector3d, 4> p;
     for(int i = 0; i < 4; ++i) p[i] = to_eigen(mesh_.points[t[i]]);
     const Eigen::Vector3d c = .25 * (p[0] + p[1] + p[2] + p[3]);
@@ -337,7 +340,9 @@ field, this makes the connectivity follow it. Such a flip may not take the small
 `o.floor_angle`. Then faces and edges of tetrahedra below `o.target_angle` are flipped when that
 raises the smallest dihedral angle of the tetrahedra replaced. Flips never create an inverted
 tetrahedron (exact orientation tests) and never touch the boundary: boundary faces belong to one
-tetrahedron and boundary edges have an open ring, so neither is flipped.
+tetrahedron and boundary edges have an open ring, so neither is flipped. Inverted or flat
+tetrahedra in the input (the mesh as a complex is otherwise valid) count as the worst of all, so
+that flips remove them where they can; `o.target_angle = 0` does only that.
 */
 template <typename Point_3, typename FrameField>
 Flip_result flip_tetrahedra(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field,

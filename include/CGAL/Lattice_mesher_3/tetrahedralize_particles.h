@@ -11,6 +11,7 @@
 #define CGAL_LATTICE_MESHER_3_TETRAHEDRALIZE_PARTICLES_H
 
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
+#include <CGAL/Lattice_mesher_3/flip_tetrahedra.h>
 #include <CGAL/Lattice_mesher_3/internal/field_sampling.h>
 #include <CGAL/Lattice_mesher_3/internal/isotropic_embedding.h>
 #include <CGAL/Lattice_mesher_3/internal/stage_parameters.h>
@@ -23,9 +24,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <set>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -48,9 +51,10 @@ namespace internal {
 // The Delaunay tetrahedralization of the particles placed at y, restricted to the domain and
 // repaired (see tetrahedralize_particles()); every geometric test but the Delaunay one is on
 // the particles' own positions.
-template <typename Domain, typename Point_3>
+template <typename Domain, typename FrameField, typename Point_3>
 Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& ps, const std::vector<Vec3>& y,
-                                                const Domain& domain, const Tetrahedralization_options& o)
+                                                const Domain& domain, const FrameField& field,
+                                                const Tetrahedralization_options& o)
 {
   typedef typename Domain::Geom_traits K;
   typedef CGAL::Triangulation_vertex_base_with_info_3<int, K> Vb;
@@ -72,21 +76,31 @@ Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& p
   // 1. Cells inside the domain.
   std::vector<Cell_handle> cells;
   for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) cells.push_back(c);
+  bool failed = false;
+  std::string what;
 #pragma omp parallel for num_threads(o.threads) schedule(dynamic, 256)
-  for(std::ptrdiff_t k = 0; k < std::ptrdiff_t(cells.size()); ++k) {
+  for(std::ptrdiff_t k = 0; k < std::ptrdiff_t(cells.size()); ++k) try {
     const Cell_handle c = cells[k];
     const Point_3 g = CGAL::centroid(P(c->vertex(0)), P(c->vertex(1)), P(c->vertex(2)), P(c->vertex(3)));
     char inside = domain.is_inside(g) ? 1 : 0;
     if(inside && on_boundary(c->vertex(0)) && on_boundary(c->vertex(1)) &&
        on_boundary(c->vertex(2)) && on_boundary(c->vertex(3))) {
+      // both lengths in the isotropic space: under a stretch the Euclidean edges are those of
+      // the long direction, and cells along a sharp edge would all look flat
+      const Mat3 b = isotropic_map(field.frame(g), g);
       double mean_edge = 0.;
       for(int i = 0; i < 4; ++i) for(int j = i + 1; j < 4; ++j)
-        mean_edge += std::sqrt(CGAL::to_double(CGAL::squared_distance(P(c->vertex(i)), P(c->vertex(j)))));
+        mean_edge += (b * (to_eigen(P(c->vertex(i))) - to_eigen(P(c->vertex(j))))).norm();
       mean_edge /= 6.;
-      if(std::sqrt(domain.project_on_surface(g).squared_distance) < o.flat_cell_ratio * mean_edge) inside = 0;
+      if((b * (to_eigen(g) - to_eigen(domain.project_on_surface(g).point))).norm() < o.flat_cell_ratio * mean_edge)
+        inside = 0;
     }
     c->info() = inside;
+  } catch(const std::exception& e) {
+#pragma omp critical(lattice_mesher_3_tetrahedralize)
+    { if(!failed) { failed = true; what = e.what(); } }
   }
+  if(failed) throw std::domain_error(what);
   for(auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c)
     if(dt.is_infinite(c)) c->info() = 0;
 
@@ -216,16 +230,31 @@ Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_
   }
   bool uniform = true;
   const std::vector<internal::Vec3> y = internal::isotropic_embedding<K>(x, field, 1.3 * l, o.threads, uniform);
-  Tetrahedral_mesh_3<Point_3> mesh = internal::restricted_delaunay(ps, y, domain, o);
-  if(!uniform && !mesh.tets.empty()) {
-    bool folded = false;
-    for(const auto& t : mesh.tets)
-      folded = folded || CGAL::orientation(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], mesh.points[t[3]]) != CGAL::POSITIVE;
-    if(folded) mesh = internal::restricted_delaunay(ps, x, domain, o);
+  Tetrahedral_mesh_3<Point_3> mesh = internal::restricted_delaunay(ps, y, domain, field, o);
+  if(!uniform) {
+    // a cell flat in the embedding may come out inverted: flips remove it, or the Euclidean
+    // Delaunay tetrahedralization, always valid, is taken instead
+    auto folded = [&] {
+      std::size_t n = 0;
+      for(const auto& t : mesh.tets)
+        n += CGAL::orientation(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], mesh.points[t[3]]) != CGAL::POSITIVE;
+      return n;
+    };
+    std::size_t before = folded(), after = before;
+    if(before > 0) {
+      Flip_options untangle;
+      untangle.target_angle = 0.;
+      flip_tetrahedra(mesh, field, untangle);
+      after = folded();
+    }
+#ifdef CGAL_LATTICE_MESHER_3_VERBOSE
+    std::cerr << "  isotropic embedding: " << before << " of " << mesh.tets.size() << " cells folded, " << after
+              << " after flips" << (after ? ": Euclidean Delaunay used" : "") << "\n";
+#endif
+    if(after > 0) mesh = internal::restricted_delaunay(ps, x, domain, field, o);
   }
   return mesh;
 }
-
 
 /// \ingroup PkgLatticeMesher3Tetrahedralization
 /// `tetrahedralize_particles()` with the named parameters `edge_length` (default 0: estimated)

@@ -14,6 +14,7 @@
 #include <CGAL/Lattice_mesher_3/internal/particle_neighbors.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/Sparse>
 
@@ -58,32 +59,57 @@ std::vector<Vec3> isotropic_embedding(const std::vector<Vec3>& x, const FrameFie
   }
 
   const Neighbor_graph g = build_neighbor_graph<K>(x, frames, field, radius, threads);
+  std::vector<Vec3> d(g.pairs.size());   // the isotropic pair vectors, up to a rotation
+  for(std::size_t p = 0; p < g.pairs.size(); ++p)
+    d[p] = metric_root(g.pair_map[p]) * (x[g.pairs[p][0]] - x[g.pairs[p][1]]);
+
   // Normal equations L Y = D of the least squares, L the graph Laplacian. A small pull of each
   // particle towards S_i x_i fixes the free translation (and an isolated particle).
   const double pull = 1e-6;
   std::vector<Eigen::Triplet<double> > t;
   t.reserve(n + 4 * g.pairs.size());
-  Eigen::MatrixXd rhs(n, 3);
-  for(std::size_t i = 0; i < n; ++i) {
-    t.emplace_back(int(i), int(i), pull);
-    rhs.row(i) = pull * (s[i] * x[i]).transpose();
-  }
-  for(std::size_t p = 0; p < g.pairs.size(); ++p) {
-    const int i = g.pairs[p][0], j = g.pairs[p][1];
-    const Vec3 d = metric_root(g.pair_map[p]) * (x[i] - x[j]);
-    t.emplace_back(i, i, 1.); t.emplace_back(j, j, 1.);
-    t.emplace_back(i, j, -1.); t.emplace_back(j, i, -1.);
-    rhs.row(i) += d.transpose();
-    rhs.row(j) -= d.transpose();
+  for(std::size_t i = 0; i < n; ++i) t.emplace_back(int(i), int(i), pull);
+  for(const auto& e : g.pairs) {
+    t.emplace_back(e[0], e[0], 1.); t.emplace_back(e[1], e[1], 1.);
+    t.emplace_back(e[0], e[1], -1.); t.emplace_back(e[1], e[0], -1.);
   }
   Eigen::SparseMatrix<double, Eigen::RowMajor> L{Eigen::Index(n), Eigen::Index(n)};
   L.setFromTriplets(t.begin(), t.end());
   Eigen::ConjugateGradient<Eigen::SparseMatrix<double, Eigen::RowMajor>, Eigen::Lower | Eigen::Upper> cg(L);
   cg.setTolerance(1e-10);
   cg.setMaxIterations(int(10 * n) + 1000);
-  Eigen::MatrixXd guess(n, 3);
-  for(std::size_t i = 0; i < n; ++i) guess.row(i) = (s[i] * x[i]).transpose();
-  const Eigen::MatrixXd Y = cg.solveWithGuess(rhs, guess);
+
+  // A metric that is not flat (fig9's) has no map whose differential is S everywhere, but one
+  // whose differential is S up to a rotation varying from place to place is much closer: as
+  // rigid as possible (Sorkine & Alexa 2007), alternating the best rotation R_i of each
+  // particle's star with the least squares of |y_i - y_j - (R_i + R_j)/2 d_ij|^2.
+  std::vector<Mat3> R(n, Mat3::Identity());
+  Eigen::MatrixXd Y(n, 3), rhs(n, 3);
+  for(std::size_t i = 0; i < n; ++i) Y.row(i) = (s[i] * x[i]).transpose();
+  const int iterations = 8;
+  for(int it = 0; it <= iterations; ++it) {
+    for(std::size_t i = 0; i < n; ++i) rhs.row(i) = pull * (s[i] * x[i]).transpose();
+    for(std::size_t p = 0; p < g.pairs.size(); ++p) {
+      const int i = g.pairs[p][0], j = g.pairs[p][1];
+      const Vec3 r = 0.5 * (R[i] + R[j]) * d[p];
+      rhs.row(i) += r.transpose();
+      rhs.row(j) -= r.transpose();
+    }
+    Y = cg.solveWithGuess(rhs, Y);
+    if(it == iterations) break;
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i) {
+      Mat3 a = Mat3::Zero();
+      for(int e = g.offsets[i]; e < g.offsets[i + 1]; ++e) {
+        const int p = g.pair_of[e];
+        a += (Y.row(g.pairs[p][0]) - Y.row(g.pairs[p][1])).transpose() * d[p].transpose();
+      }
+      const Eigen::JacobiSVD<Mat3> svd(a, Eigen::ComputeFullU | Eigen::ComputeFullV);
+      Mat3 u = svd.matrixU();
+      if((u * svd.matrixV().transpose()).determinant() < 0.) u.col(2) = -u.col(2);
+      R[i] = u * svd.matrixV().transpose();
+    }
+  }
   for(std::size_t i = 0; i < n; ++i) y[i] = Y.row(i).transpose();
   return y;
 }
