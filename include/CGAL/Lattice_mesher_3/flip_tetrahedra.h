@@ -51,7 +51,8 @@ struct Flip_options
 struct Flip_result
 {
   std::size_t flips23 = 0, flips32 = 0, edge_removals = 0;   ///< edge_removals: rings of 4 and more
-  std::size_t total() const { return flips23 + flips32 + edge_removals; }
+  std::size_t boundary_flips = 0;   ///< 2-2 flips of flat boundary faces, only to remove inverted tetrahedra
+  std::size_t total() const { return flips23 + flips32 + edge_removals + boundary_flips; }
 };
 
 /*!
@@ -180,7 +181,47 @@ public:
     // orient the ring counterclockwise seen from a: then every triangle (i < k < j) of a valid
     // triangulation has a on its positive and b on its negative side (see pair_quality)
     if(orientation(a, b, ring[0], ring[1]) == CGAL::POSITIVE) std::reverse(ring.begin(), ring.end());
+    std::vector<std::array<int, 4> > created;
+    if(!triangulate_ring(a, b, ring, c, created)) return 0;
+    return try_replace(around, created, c) ? n : 0;
+  }
 
+  // 2-2 flip of a boundary edge (a, c) whose two boundary faces (a, c, b) and (c, a, e) lie in
+  // one plane (within 1 degree): (b, e) replaces it on the boundary, and the open ring b .. e
+  // around (a, c), closed by (b, e), is triangulated as in remove_edge(). Only for inverted
+  // tetrahedra (a cell flat in the embedding of tetrahedralize_particles()): a sliver triangle
+  // on a flat boundary face, folded over, is the one thing interior flips cannot undo.
+  int flip_boundary_edge(int a, int c, int max_ring)
+  {
+    auto it = edges_.find(sorted(std::array<int, 2>{ a, c }));
+    if(it == edges_.end()) return 0;
+    const std::vector<int> around = it->second;
+    const int n = int(around.size()) + 1;
+    if(n < 3 || n > max_ring) return 0;
+    std::vector<int> ring;
+    if(!order_open_ring(a, c, around, ring)) return 0;
+    const Eigen::Vector3d pa = to_eigen(mesh_.points[a]), pc = to_eigen(mesh_.points[c]);
+    const Eigen::Vector3d n0 = (pc - pa).cross(to_eigen(mesh_.points[ring.front()]) - pa).normalized();
+    const Eigen::Vector3d n1 = (to_eigen(mesh_.points[ring.back()]) - pa).cross(pc - pa).normalized();
+    if(!(n0.cross(n1).norm() < 0.0175)) return 0;   // (folded over, b and e are on one side of ac)
+    for(int pass = 0; pass < 2; ++pass, std::reverse(ring.begin(), ring.end())) {
+      std::vector<std::array<int, 4> > created;
+      if(triangulate_ring(a, c, ring, ANGLE, created) && try_replace(around, created, ANGLE)) {
+        boundary_changed_ = true;
+        return n;
+      }
+    }
+    return 0;
+  }
+
+private:
+  // the best triangulation of the polygon `ring` (closed by its last and first vertex), each
+  // triangle joined to a and to b, by dynamic programming: the highest smallest angle, or the
+  // lowest shape energy; false if none is valid
+  bool triangulate_ring(int a, int b, const std::vector<int>& ring, Criterion c,
+                        std::vector<std::array<int, 4> >& created) const
+  {
+    const int n = int(ring.size());
     // best[i][j]: the best score triangulating ring[i..j] (ANGLE: the smallest angle, SHAPE:
     // minus the shape energy, both maximized; -inf: no valid triangulation); choice[i][j] the apex
     const double none = -HUGE_VAL;
@@ -199,18 +240,29 @@ public:
           if(q > best[i][j]) { best[i][j] = q; choice[i][j] = k; }
         }
       }
-    if(best[0][n - 1] == none) return 0;
-    std::vector<std::array<int, 4> > created;
+    if(best[0][n - 1] == none) return false;
     collect(ring, choice, 0, n - 1, a, b, created);
-    return try_replace(around, created, c) ? n : 0;
+    return true;
   }
 
-  // writes the current tetrahedra back to the mesh
+public:
+
+  // writes the current tetrahedra back to the mesh, and its boundary faces if they changed
   void commit()
   {
     mesh_.tets.clear();
     for(std::size_t t = 0; t < tets_.size(); ++t)
       if(alive_[t]) mesh_.tets.push_back(tets_[t]);
+    if(!boundary_changed_) return;
+    mesh_.boundary_faces.clear();
+    for(const auto& f : faces_) {
+      if(f.second[1] >= 0) continue;
+      std::array<int, 3> face = f.first;
+      // outward: the tetrahedron's own fourth vertex on the negative side
+      if(orientation(face[0], face[1], face[2], apex(f.second[0], f.first)) != CGAL::NEGATIVE) std::swap(face[0], face[1]);
+      mesh_.boundary_faces.push_back(face);
+    }
+    std::sort(mesh_.boundary_faces.begin(), mesh_.boundary_faces.end());
   }
 
   // the tetrahedra worth trying: below the angle (ANGLE) or above the shape tolerance (SHAPE)
@@ -223,6 +275,7 @@ public:
     return out;
   }
   bool alive(int t) const { return alive_[t] != 0; }
+  bool inverted(int t) const { return measure_[t].angle < 0.; }
   const std::array<int, 4>& tet(int t) const { return tets_[t]; }
 
 private:
@@ -255,6 +308,36 @@ private:
     out.push_back({ ring[i], ring[k], ring[j], b });
     collect(ring, choice, i, k, a, b, out);
     collect(ring, choice, k, j, a, b, out);
+  }
+
+  // the vertices around the boundary edge ab from the apex of one boundary face to that of the
+  // other; false if ab is not a boundary edge of two boundary faces
+  bool order_open_ring(int a, int b, const std::vector<int>& around, std::vector<int>& ring) const
+  {
+    std::unordered_map<int, std::vector<int> > link;
+    for(int t : around) {
+      std::array<int, 2> l{ -1, -1 };
+      int k = 0;
+      for(int v : tets_[t]) if(v != a && v != b) l[k++] = v;
+      link[l[0]].push_back(l[1]);
+      link[l[1]].push_back(l[0]);
+    }
+    int start = -1, ends = 0;
+    for(const auto& e : link) {
+      if(e.second.size() > 2) return false;
+      if(e.second.size() == 1) { ++ends; if(start < 0 || e.first < start) start = e.first; }
+    }
+    if(ends != 2) return false;
+    ring.assign(1, start);
+    int previous = -1, current = start;
+    while(ring.size() <= around.size()) {
+      const std::vector<int>& next = link[current];
+      const int v = next[0] != previous ? next[0] : (next.size() > 1 ? next[1] : -1);
+      if(v < 0) break;
+      previous = current; current = v;
+      ring.push_back(v);
+    }
+    return ring.size() == around.size() + 1 && link[ring.back()].size() == 1;
   }
 
   // the vertices around edge ab in cyclic order; false if the tetrahedra do not close a ring
@@ -323,6 +406,7 @@ private:
   std::vector<char> alive_;
   std::unordered_map<std::array<int, 3>, std::array<int, 2>, Face_key_hash> faces_;
   std::unordered_map<std::array<int, 2>, std::vector<int>, Face_key_hash> edges_;
+  bool boundary_changed_ = false;
 };
 
 } // namespace internal
@@ -339,10 +423,12 @@ mapped tetrahedron approaches a lattice tetrahedron: a Delaunay tetrahedralizati
 field, this makes the connectivity follow it. Such a flip may not take the smallest angle below
 `o.floor_angle`. Then faces and edges of tetrahedra below `o.target_angle` are flipped when that
 raises the smallest dihedral angle of the tetrahedra replaced. Flips never create an inverted
-tetrahedron (exact orientation tests) and never touch the boundary: boundary faces belong to one
+tetrahedron (exact orientation tests) and keep the boundary: boundary faces belong to one
 tetrahedron and boundary edges have an open ring, so neither is flipped. Inverted or flat
 tetrahedra in the input (the mesh as a complex is otherwise valid) count as the worst of all, so
-that flips remove them where they can; `o.target_angle = 0` does only that.
+that flips remove them where they can, there also by 2-2 flips of two boundary faces that lie in
+one plane (within 1 degree), which then changes `boundary_faces`; `o.target_angle = 0` does
+only that.
 */
 template <typename Point_3, typename FrameField>
 Flip_result flip_tetrahedra(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field,
@@ -367,6 +453,9 @@ Flip_result flip_tetrahedra(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField&
           }
         for(int i = 0; i < 4 && !done; ++i)
           if(fm.flip23({ v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4] }, c)) { ++result.flips23; done = true; }
+        for(int i = 0; i < 4 && !done && fm.inverted(t); ++i)
+          for(int j = i + 1; j < 4 && !done; ++j)
+            if(fm.flip_boundary_edge(v[i], v[j], o.max_ring_size) > 0) { ++result.boundary_flips; done = true; }
       }
       if(result.total() == before) break;
     }
