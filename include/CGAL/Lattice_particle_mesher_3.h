@@ -15,6 +15,7 @@
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/frame_fields.h>
 #include <CGAL/Lattice_mesher_3/insert_delete_particles.h>
+#include <CGAL/Lattice_mesher_3/internal/isotropic_embedding.h>
 #include <CGAL/Lattice_mesher_3/optimize_particles.h>
 #include <CGAL/Lattice_mesher_3/flip_tetrahedra.h>
 #include <CGAL/Lattice_mesher_3/smooth_vertices.h>
@@ -176,12 +177,16 @@ public:
 
   void optimize() { Lattice_mesher_3::Null_lattice_mesher_visitor v; optimize(v); }
 
-  /// The random start at edge length `l`: N = density x isotropic volume / l^3 particles,
-  /// uniform in the isotropic space (rejection on |det B|) with the seed of the parameters, plus
-  /// a fixed particle at every corner of the domain. Replaces the current particles.
+  /// The start at edge length `l`: a fixed particle at every corner of the domain and a free
+  /// one at a deep point (of 256 random points inside, the farthest from the boundary in the
+  /// isotropic space), grown by `grow_particles()` into one lattice grain. Where the growth
+  /// cannot reach (another component, a passage narrower than the lattice), a random point
+  /// (uniform in the isotropic space) farther than 2 l from every particle seeds another grain.
+  /// Random points come from the seed of the parameters. Replaces the current particles.
   void initialize_particles(double l)
   {
     using namespace Lattice_mesher_3;
+    typedef typename MeshDomain::Geom_traits K;
     particles_.clear();
     for(std::size_t c = 0; c < domain_.corners().size(); ++c)
       particles_.push_back(domain_.corners()[c], Particle_kind::FIXED, int(c));
@@ -189,20 +194,53 @@ public:
     const CGAL::Bbox_3 bb = domain_.bbox();
     const double max_det = det_b_samples().max * 1.25;
     Uniform u(p_.seed);
-    const std::size_t max_tries = 1000 * (n + 10);
-    for(std::size_t tries = 0; particles_.size() < n + domain_.corners().size() && tries < max_tries; ++tries) {
-      const Point_3 p(bb.xmin() + u() * (bb.xmax() - bb.xmin()), bb.ymin() + u() * (bb.ymax() - bb.ymin()),
-                      bb.zmin() + u() * (bb.zmax() - bb.zmin()));
-      const double accept = u();
-      if(!domain_.is_inside(p)) continue;
-      if(accept * max_det > std::abs(Lattice_mesher_3::internal::isotropic_map(field_.frame(p), p).determinant())) continue;
-      particles_.push_back(p, Particle_kind::FREE);
+    // a random point inside, uniform in the isotropic space; false after many misses
+    auto sample = [&](Point_3& p) {
+      for(int tries = 0; tries < 100000; ++tries) {
+        p = Point_3(bb.xmin() + u() * (bb.xmax() - bb.xmin()), bb.ymin() + u() * (bb.ymax() - bb.ymin()),
+                    bb.zmin() + u() * (bb.zmax() - bb.zmin()));
+        const double accept = u();
+        if(domain_.is_inside(p) &&
+           accept * max_det <= std::abs(Lattice_mesher_3::internal::isotropic_map(field_.frame(p), p).determinant())) return true;
+      }
+      return false;
+    };
+    Point_3 deep, p;
+    double depth = -1.;
+    for(int k = 0; k < 256 && sample(p); ++k) {
+      const Eigen::Matrix3d b = Lattice_mesher_3::internal::isotropic_map(field_.frame(p), p);
+      const double d = (b * (Lattice_mesher_3::internal::to_eigen(p) - Lattice_mesher_3::internal::to_eigen(domain_.project_on_surface(p).point))).norm();
+      if(d > depth) { depth = d; deep = p; }
+    }
+    if(depth < 0.)
+      throw std::invalid_argument("Lattice_particle_mesher_3: could not place particles inside the domain "
+                                  "(is it empty, or the edge length larger than the domain?)");
+    particles_.push_back(deep, Particle_kind::FREE);
+    Optimization_options o = options(l);
+    o.max_iterations = 5;
+    for(;;) {
+      grow_particles(particles_, domain_, field_, lattice_, o);
+      // the first random point that no particle covers seeds the next grain
+      const std::vector<Lattice_mesher_3::internal::Vec3> x = Lattice_mesher_3::internal::to_vectors(particles_.points);
+      const Lattice_mesher_3::internal::Particle_frames frames = Lattice_mesher_3::internal::compute_particle_frames<K>(x, field_, p_.threads);
+      const Lattice_mesher_3::internal::Point_search_3<K> search(particles_.points);
+      std::vector<std::size_t> near;
+      bool seeded = false;
+      for(std::size_t k = 0; k < 2 * n + 64 && !seeded && sample(p); ++k) {
+        const Lattice_mesher_3::internal::Vec3 q = Lattice_mesher_3::internal::to_eigen(p);
+        const Eigen::Matrix3d b = Lattice_mesher_3::internal::isotropic_map(field_.frame(p), p);
+        near.clear();
+        Lattice_mesher_3::internal::search_isotropic_ball(search, q, b.inverse(), 2. * l, frames.max_stretch, near);
+        bool covered = false;
+        for(std::size_t j : near) covered = covered || (b * (q - x[j])).norm() < 2. * l;
+        if(!covered) { particles_.push_back(p, Particle_kind::FREE); seeded = true; }
+      }
+      if(!seeded) break;
     }
     if(particles_.size() < 4)
       throw std::invalid_argument("Lattice_particle_mesher_3: could not place particles inside the domain "
                                   "(is it empty, or the edge length larger than the domain?)");
   }
-
 
   /// Connects the current particles into a tetrahedral mesh, then improves its worst tetrahedra
   /// (`flip_tetrahedra()`, `smooth_vertices()`), as the parameters say.
@@ -266,14 +304,51 @@ public:
   }
 
   /// The number k of coarse levels: as given, or the largest k <= 4 at which the coarse lattice
-  /// still has 16 vertices. Few particles at the start form one lattice grain instead of many
-  /// with mismatched offsets, which refinement then propagates to the final edge length.
+  /// still has 16 vertices and can follow the field: its stretch changes by at most 25% along a
+  /// coarse cube edge (`field_variation()`). Few particles at the start form one lattice grain
+  /// instead of many with mismatched offsets, which refinement then propagates to the final edge
+  /// length; but a coarse lattice across which the field varies (fig8: B doubles along a cube
+  /// edge at k = 2) is no lattice of the fine field, and refinement propagates its defects.
   int coarse_levels() const
   {
     if(p_.coarse_levels >= 0) return p_.coarse_levels;
     int k = 0;
-    while(k < max_coarse_levels && expected_vertices(std::ldexp(p_.edge_length, k + 1)) >= 16.) ++k;
+    while(k < max_coarse_levels && expected_vertices(std::ldexp(p_.edge_length, k + 1)) >= 16. &&
+          field_variation(std::ldexp(p_.edge_length, k + 1)) <= 0.25) ++k;
     return k;
+  }
+
+  /// How much the field's stretch changes over an isotropic length `l`: at 256 random points p
+  /// inside the domain, the largest relative change |S(p + l T(p) e_m) - S(p)| / |S(p)|
+  /// (Frobenius) along the three frame axes, S = (B^T B)^1/2 the metric part of B; the 90th
+  /// percentile of these. 0 for a constant field and for any cross field, whose rotations a
+  /// coarse lattice follows as well as a fine one.
+  double field_variation(double l) const
+  {
+    using Lattice_mesher_3::internal::isotropic_map;
+    using Lattice_mesher_3::internal::metric_root;
+    using Lattice_mesher_3::internal::to_eigen;
+    const CGAL::Bbox_3 bb = domain_.bbox();
+    Uniform u(0x5eed);
+    std::vector<double> change;
+    for(int tries = 0; tries < 100000 && change.size() < 256; ++tries) {
+      const Point_3 p(bb.xmin() + u() * (bb.xmax() - bb.xmin()), bb.ymin() + u() * (bb.ymax() - bb.ymin()),
+                      bb.zmin() + u() * (bb.zmax() - bb.zmin()));
+      if(!domain_.is_inside(p)) continue;
+      try {
+        const Eigen::Matrix3d t = field_.frame(p), b = metric_root(isotropic_map(t, p));
+        double c = 0.;
+        for(int m = 0; m < 3; ++m) {
+          const Eigen::Vector3d q = to_eigen(p) + l * t.col(m);
+          const Point_3 pq(q[0], q[1], q[2]);
+          c = (std::max)(c, (metric_root(isotropic_map(field_.frame(pq), pq)) - b).norm() / b.norm());
+        }
+        change.push_back(c);
+      } catch(const std::exception&) {}   // a frame outside the field's domain tells nothing
+    }
+    if(change.empty()) return 0.;
+    std::sort(change.begin(), change.end());
+    return change[std::size_t(0.9 * double(change.size() - 1))];
   }
 
 private:

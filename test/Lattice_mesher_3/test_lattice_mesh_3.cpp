@@ -21,6 +21,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <random>
 #include <string>
 
 namespace {
@@ -129,10 +130,20 @@ TEST(Lattice_mesh_3, StagesAsNamedParameterFunctions)
   LM::Lattice_mesher_parameters p;
   p.edge_length = 0.25;
   CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> mesher(cube(), field, p);
+  // the mesher's start: the corners, and a lattice grown from one particle
   mesher.initialize_particles(0.25);
-  LM::Particle_set_3<Point_3> ps = mesher.particles();
-  EXPECT_EQ(ps.kinds[0], LM::Particle_kind::FIXED);
+  EXPECT_EQ(mesher.particles().kinds[0], LM::Particle_kind::FIXED);
+  EXPECT_NEAR(double(mesher.particles().size()), mesher.expected_vertices(0.25), 0.2 * mesher.expected_vertices(0.25));
+  // the stages on their own, from the corners and a few particles at random
+  LM::Particle_set_3<Point_3> ps;
+  for(std::size_t c = 0; c < cube().corners().size(); ++c) ps.push_back(cube().corners()[c], LM::Particle_kind::FIXED, int(c));
+  std::mt19937 g(3);
+  std::uniform_real_distribution<double> u(0.05, 0.95);
+  for(int i = 0; i < 40; ++i) ps.push_back(Point_3(u(g), u(g), u(g)), LM::Particle_kind::FREE);
   const auto np = CGAL::parameters::edge_length(0.25).lattice(LM::Lattice_type::BCC).number_of_threads(2);
+  LM::Particle_set_3<Point_3> grown;
+  grown.push_back(Point_3(0.5, 0.5, 0.5), LM::Particle_kind::FREE);
+  EXPECT_GT(LM::grow_particles(grown, cube(), field, np), 50u);
   const LM::Optimization_result r = LM::optimize_particles_round(ps, cube(), field, np.number_of_iterations(5));
   EXPECT_LE(r.iterations, 5);
   EXPECT_LT(r.energy, 0.);

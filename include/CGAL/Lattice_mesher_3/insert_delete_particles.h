@@ -84,13 +84,14 @@ std::size_t delete_particles(Particle_set_3<Point_3>& ps, const Domain& /*domain
 
 namespace internal {
 
-// Candidates p_i + T(p_i) l O_k for the given offsets O_k (unit cube), projected on the boundary
-// when outside, minus those within 0.1 l of a particle or of an earlier candidate; accepted in
-// ascending GHK energy while no particle (accepted ones included) is closer than min_distance.
+// Candidates p_i + T(p_i) l O_k for the given offsets O_k (unit cube) and the particles i from
+// `first_source` on, projected on the boundary when outside, minus those within 0.1 l of a
+// particle or of an earlier candidate; accepted in ascending GHK energy while no particle
+// (accepted ones included) is closer than min_distance.
 template <typename Domain, typename FrameField, typename Point_3>
 std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
                               const Lattice_3& lattice, const std::vector<Eigen::Vector3d>& offsets,
-                              double min_distance, const Optimization_options& o)
+                              double min_distance, const Optimization_options& o, std::size_t first_source = 0)
 {
   typedef typename Domain::Geom_traits K;
   using internal::Vec3;
@@ -110,7 +111,8 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
 
   struct Candidate { Point_3 p; Particle_kind kind; int feature; double energy; Mat3 B; bool keep; };
   const std::size_t m = offsets.size();
-  std::vector<Candidate> cand(n * m);
+  const std::size_t sources = n - (std::min)(first_source, n);
+  std::vector<Candidate> cand(sources * m);
   const double block = (std::max)(min_distance, coincidence);
   double offset_radius = 0.;
   for(const Eigen::Vector3d& off : offsets) offset_radius = (std::max)(offset_radius, off.norm());
@@ -118,7 +120,7 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
   // inside without an inside test (the ball around an inside point up to the surface is inside).
   std::vector<double> clearance(n, 0.);
 #pragma omp parallel for num_threads(o.threads) schedule(static)
-  for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i)
+  for(std::ptrdiff_t i = std::ptrdiff_t(n - sources); i < std::ptrdiff_t(n); ++i)
     if(ps.kinds[i] == Particle_kind::FREE && domain.is_inside(ps.points[i]))
       clearance[i] = std::sqrt(domain.project_on_surface(ps.points[i]).squared_distance);
   bool failed = false;
@@ -128,11 +130,11 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
     std::vector<std::size_t> near, around;
     std::ptrdiff_t around_of = -1;
 #pragma omp for schedule(static)
-    for(std::ptrdiff_t c = 0; c < std::ptrdiff_t(n * m); ++c) {
+    for(std::ptrdiff_t c = 0; c < std::ptrdiff_t(sources * m); ++c) {
       Candidate& cd = cand[c];
       cd.keep = false;
       try {
-        const std::size_t i = std::size_t(c) / m, k = std::size_t(c) % m;
+        const std::size_t i = n - sources + std::size_t(c) / m, k = std::size_t(c) % m;
         Vec3 q = x[i] + l * (frames.T[i] * offsets[k]);
         // Most candidates fall on a particle (the lattice around i is already there): drop them
         // with i's neighbours, one search per particle, before any per-candidate search.
@@ -251,6 +253,34 @@ std::size_t refine_particles(Particle_set_3<Point_3>& ps, const Domain& domain, 
   return internal::insert_candidates(ps, domain, field, lattice, axes, 0.1 * o.edge_length, o);
 }
 
+/*!
+\ingroup PkgLatticeMesher3InsertionDeletion
+
+Grows a particle set by rounds of `insert_particles()`, each followed by an optimization round of
+`o.max_iterations` L-BFGS iterations (`optimize_particles_round()`), until a round inserts
+nothing. From a single particle this lays one lattice grain that follows the field shell after
+shell; particles placed at random instead nucleate many grains, whose offsets mismatch where
+they meet (under fig8's field, 5 lattice cells across: grain boundaries all along the faces).
+Returns the number inserted.
+*/
+template <typename Domain, typename FrameField, typename Point_3>
+std::size_t grow_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
+                           const Lattice_3& lattice, const Optimization_options& o)
+{
+  // only the particles of the last shell have free one-ring positions: they are the sources
+  const double min_distance = 0.75 * lattice.closest_distance * o.edge_length;
+  std::size_t total = 0, front = 0;
+  for(;;) {
+    const std::size_t before = ps.size();
+    const std::size_t inserted = internal::insert_candidates(ps, domain, field, lattice, lattice.one_ring, min_distance, o, front);
+    if(inserted == 0) break;
+    total += inserted;
+    front = before;
+    optimize_particles_round(ps, domain, field, lattice, o);
+  }
+  return total;
+}
+
 /// \ingroup PkgLatticeMesher3InsertionDeletion
 /// `delete_particles()` with the named parameters `edge_length` (required), `lattice` (BCC),
 /// `neighbor_radius_ratio` (1.3) and `number_of_threads` (1).
@@ -273,6 +303,19 @@ std::size_t insert_particles(Particle_set_3<Point_3>& ps, const Domain& domain, 
 {
   return insert_particles(ps, domain, field, internal::stage_lattice(np),
                           internal::stage_options<Optimization_options>(np, "insert_particles"));
+}
+
+/// \ingroup PkgLatticeMesher3InsertionDeletion
+/// `grow_particles()` with the named parameters `edge_length` (required), `lattice` (BCC),
+/// `number_of_iterations` after each insertion (5) and `number_of_threads` (1).
+template <typename Domain, typename FrameField, typename Point_3,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t grow_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
+                           const NamedParameters& np = parameters::default_values())
+{
+  Optimization_options o = internal::stage_options<Optimization_options>(np, "grow_particles");
+  o.max_iterations = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_iterations), 5);
+  return grow_particles(ps, domain, field, internal::stage_lattice(np), o);
 }
 
 } // namespace Lattice_mesher_3

@@ -233,6 +233,11 @@ Optimization_result optimize_particles_round(Particle_set_3<Point_3>& ps, const 
   for(Particle_kind k : ps.kinds) movable += (k != Particle_kind::FIXED);
   const double tolerance = o.gradient_tolerance * std::sqrt(double((std::max)(movable, std::size_t(1))));
 
+  // Each rebuild freezes B anew: under a varying field the energy of a chunk is not the one of
+  // the previous, and the rebuilt graphs' minima may drift (fig8 FCC: 1,000 iterations with the
+  // energy rising). Chunks stop, keeping the better positions, once one no longer lowers it.
+  std::vector<Point_3> previous_points;
+  double previous_energy = std::numeric_limits<double>::infinity();
   while(remaining > 0) {
     std::vector<Vec3> x = internal::to_vectors(ps.points);
     const internal::Particle_frames frames = internal::compute_particle_frames<K>(x, field, o.threads);
@@ -285,6 +290,9 @@ Optimization_result optimize_particles_round(Particle_set_3<Point_3>& ps, const 
               << ", restarts " << result.restarts << (converged ? " (converged)" : "") << "\n";
 #endif
     if(converged || o.max_iterations > 0) break;
+    if(result.energy > previous_energy) { ps.points = previous_points; result.energy = previous_energy; break; }
+    previous_points = ps.points;
+    previous_energy = result.energy;
   }
   snap_particles_to_boundary(ps, domain, field, o);
   return result;

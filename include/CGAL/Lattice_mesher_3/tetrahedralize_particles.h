@@ -189,6 +189,45 @@ Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& p
   return mesh;
 }
 
+// Moves free vertices of inverted tetrahedra towards the centroid of their neighbours (by a
+// quarter, a half, three quarters, all the way) when that makes every tetrahedron around them
+// positive: an interior sliver of the embedding that no flip removes. Returns the number of
+// inverted tetrahedra left.
+template <typename Point_3>
+std::size_t untangle_by_moves(Tetrahedral_mesh_3<Point_3>& mesh)
+{
+  const std::size_t nv = mesh.points.size();
+  std::vector<std::vector<int> > around(nv);
+  for(std::size_t t = 0; t < mesh.tets.size(); ++t)
+    for(int v : mesh.tets[t]) around[v].push_back(int(t));
+  auto positive = [&](int t) {
+    const auto& q = mesh.tets[t];
+    return CGAL::orientation(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]]) == CGAL::POSITIVE;
+  };
+  std::size_t left = 0;
+  for(std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    if(positive(int(t))) continue;
+    bool fixed = false;
+    for(int v : mesh.tets[t]) {
+      if(fixed || mesh.vertex_kinds.empty() || mesh.vertex_kinds[v] != Particle_kind::FREE) continue;
+      Vec3 c = Vec3::Zero();
+      int count = 0;
+      for(int s : around[v]) for(int w : mesh.tets[s]) if(w != v) { c += to_eigen(mesh.points[w]); ++count; }
+      c /= double(count);
+      const Point_3 start = mesh.points[v];
+      for(double f : { .25, .5, .75, 1. }) {
+        const Vec3 p = (1. - f) * to_eigen(start) + f * c;
+        mesh.points[v] = Point_3(p[0], p[1], p[2]);
+        fixed = std::all_of(around[v].begin(), around[v].end(), positive);
+        if(fixed) break;
+      }
+      if(!fixed) mesh.points[v] = start;
+    }
+    left += !fixed;
+  }
+  return left;
+}
+
 } // namespace internal
 
 /*!
@@ -232,8 +271,9 @@ Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_
   const std::vector<internal::Vec3> y = internal::isotropic_embedding<K>(x, field, 1.3 * l, o.threads, uniform);
   Tetrahedral_mesh_3<Point_3> mesh = internal::restricted_delaunay(ps, y, domain, field, o);
   if(!uniform) {
-    // a cell flat in the embedding may come out inverted: flips remove it, or the Euclidean
-    // Delaunay tetrahedralization, always valid, is taken instead
+    // a cell flat in the embedding may come out inverted: flips remove it, else a small move of
+    // a free vertex; failing both, the Euclidean Delaunay tetrahedralization, always valid, is
+    // taken instead
     auto folded = [&] {
       std::size_t n = 0;
       for(const auto& t : mesh.tets)
@@ -246,6 +286,7 @@ Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_
       untangle.target_angle = 0.;
       flip_tetrahedra(mesh, field, untangle);
       after = folded();
+      if(after > 0) after = internal::untangle_by_moves(mesh);
     }
 #ifdef CGAL_LATTICE_MESHER_3_VERBOSE
     std::cerr << "  isotropic embedding: " << before << " of " << mesh.tets.size() << " cells folded, " << after
