@@ -146,7 +146,8 @@ public:
       report(0, r, 0, 0, false);
       for(int round = 1; round <= max_rounds; ++round) {
         const std::size_t del = delete_particles(particles_, domain_, field_, lattice_, o);
-        const std::size_t ins = insert_particles(particles_, domain_, field_, lattice_, o);
+        const std::size_t ins = insert_particles(particles_, domain_, field_, lattice_, o)
+                              + insert_feature_particles(particles_, domain_, field_, lattice_, o);
         if(del + ins == 0) break;
         o.max_iterations = round < 5 ? 13 : 8;
         const double previous = r.energy;
@@ -163,7 +164,8 @@ public:
     // deletion of what still does not fit close the loop.
     Optimization_options o = options(p_.edge_length);
     std::size_t deleted = delete_particles(particles_, domain_, field_, lattice_, o);
-    const std::size_t inserted = insert_particles(particles_, domain_, field_, lattice_, o);
+    const std::size_t inserted = insert_particles(particles_, domain_, field_, lattice_, o)
+                               + insert_feature_particles(particles_, domain_, field_, lattice_, o);
     deleted += delete_particles(particles_, domain_, field_, lattice_, o);
     o.max_iterations = 0;
     o.gradient_tolerance = p_.final_gradient_tolerance;
