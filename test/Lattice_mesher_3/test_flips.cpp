@@ -18,6 +18,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_meshes.h"
+
 #include <algorithm>
 #include <random>
 #include <set>
@@ -28,31 +30,9 @@ namespace LM = CGAL::Lattice_mesher_3;
 typedef CGAL::Epick K;
 typedef K::Point_3 Point_3;
 typedef CGAL::Lattice_mesher_traits_3<K> Traits;
-typedef LM::Polyhedral_lattice_domain_3<K> Domain;
 
-const Domain& unit_cube()
-{
-  static const Domain d(LM::make_cube_surface_3<K>(0., 1.));
-  return d;
-}
-
-// A jittered grid: corners fixed, faces and edges on the surface, the rest free. Its Delaunay
-// mesh has many poor tetrahedra for the improvement stages to work on.
-LM::Tetrahedral_mesh_3<Point_3> jittered_mesh(unsigned int seed)
-{
-  std::mt19937 g(seed);
-  std::uniform_real_distribution<double> jitter(-0.12, 0.12);
-  LM::Particle_set_3<Point_3> ps;
-  const int n = 6;
-  for(int i = 0; i <= n; ++i) for(int j = 0; j <= n; ++j) for(int k = 0; k <= n; ++k) {
-    const int on = (i == 0 || i == n) + (j == 0 || j == n) + (k == 0 || k == n);
-    auto c = [&](int a, bool fixed) { return fixed ? double(a) / n : (a + jitter(g)) / n; };
-    const Point_3 p(c(i, i == 0 || i == n), c(j, j == 0 || j == n), c(k, k == 0 || k == n));
-    ps.push_back(p, on == 3 ? LM::Particle_kind::FIXED : on == 2 ? LM::Particle_kind::SHARP_EDGE
-                   : on == 1 ? LM::Particle_kind::BOUNDARY : LM::Particle_kind::FREE);
-  }
-  return LM::tetrahedralize_particles(ps, unit_cube(), LM::Constant_frame_field_3<Traits>());
-}
+using test_meshes::unit_cube;
+using test_meshes::jittered_mesh;
 
 double worst_angle(const LM::Tetrahedral_mesh_3<Point_3>& mesh, const LM::Constant_frame_field_3<Traits>& field)
 {
