@@ -199,8 +199,7 @@ public:
     // a random point inside, uniform in the isotropic space; false after many misses
     auto sample = [&](Point_3& p) {
       for(int tries = 0; tries < 100000; ++tries) {
-        p = Point_3(bb.xmin() + u() * (bb.xmax() - bb.xmin()), bb.ymin() + u() * (bb.ymax() - bb.ymin()),
-                    bb.zmin() + u() * (bb.zmax() - bb.zmin()));
+        p = Lattice_mesher_3::internal::random_point<Point_3>(bb, u);
         const double accept = u();
         if(domain_.is_inside(p) &&
            accept * max_det <= std::abs(Lattice_mesher_3::internal::isotropic_map(field_.frame(p), p).determinant())) return true;
@@ -230,9 +229,9 @@ public:
       bool seeded = false;
       for(std::size_t k = 0; k < 2 * n + 64 && !seeded && sample(p); ++k) {
         const Lattice_mesher_3::internal::Vec3 q = Lattice_mesher_3::internal::to_eigen(p);
-        const Eigen::Matrix3d b = Lattice_mesher_3::internal::isotropic_map(field_.frame(p), p);
+        const Eigen::Matrix3d t = field_.frame(p), b = Lattice_mesher_3::internal::isotropic_map(t, p);
         near.clear();
-        Lattice_mesher_3::internal::search_isotropic_ball(search, q, b.inverse(), 2. * l, frames.max_stretch, near);
+        Lattice_mesher_3::internal::search_isotropic_ball(search, q, t, 2. * l, frames.max_stretch, near);
         bool covered = false;
         for(std::size_t j : near) covered = covered || (b * (q - x[j])).norm() < 2. * l;
         if(!covered) { particles_.push_back(p, Particle_kind::FREE); seeded = true; }
@@ -334,8 +333,7 @@ public:
     Uniform u(0x5eed);
     std::vector<double> change;
     for(int tries = 0; tries < 100000 && change.size() < 256; ++tries) {
-      const Point_3 p(bb.xmin() + u() * (bb.xmax() - bb.xmin()), bb.ymin() + u() * (bb.ymax() - bb.ymin()),
-                      bb.zmin() + u() * (bb.zmax() - bb.zmin()));
+      const Point_3 p = Lattice_mesher_3::internal::random_point<Point_3>(bb, u);
       if(!domain_.is_inside(p)) continue;
       try {
         const Eigen::Matrix3d t = field_.frame(p), b = metric_root(isotropic_map(t, p));

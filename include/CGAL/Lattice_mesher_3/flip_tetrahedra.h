@@ -102,14 +102,15 @@ public:
   Flip_mesh(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field, const Flip_options& o)
     : mesh_(mesh), field_(field), o_(o)
   {
-    for(const std::array<int, 4>& t : mesh.tets) add(t, measure(t));
+    // An inverted tetrahedron (only given ones: flips create none, so measure() need not look)
+    // measures -1 degree and a huge shape energy: both criteria take any flip that removes it.
+    for(const std::array<int, 4>& t : mesh.tets)
+      add(t, orientation(t[0], t[1], t[2], t[3]) == CGAL::POSITIVE ? measure(t) : Flip_measure{ -1., 1e6 });
   }
 
-  // An inverted tetrahedron (only given ones: flips create none) measures -1 degree and a huge
-  // shape energy, so that both criteria take any flip that removes it.
+  // either orientation: the angles are unsigned (edge removal measures its b side reversed)
   Flip_measure measure(const std::array<int, 4>& t) const
   {
-    if(orientation(t[0], t[1], t[2], t[3]) != CGAL::POSITIVE) return { -1., 1e6 };
     std::array<Eigen::Vector3d, 4> p;
     for(int i = 0; i < 4; ++i) p[i] = to_eigen(mesh_.points[t[i]]);
     const Eigen::Vector3d c = .25 * (p[0] + p[1] + p[2] + p[3]);

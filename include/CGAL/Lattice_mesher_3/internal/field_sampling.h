@@ -28,6 +28,17 @@ struct Det_b_samples
   double max = 1.;
 };
 
+// A point of the box drawn with `u`, a generator of uniform numbers in [0, 1): three calls in a
+// fixed order (z, y, x: the order GCC gave the calls written as constructor arguments, whose
+// order C++ leaves open), so that every platform draws the same points.
+template <typename Point_3, typename Uniform>
+Point_3 random_point(const CGAL::Bbox_3& bb, Uniform& u)
+{
+  const double z = bb.zmin() + u() * (bb.zmax() - bb.zmin());
+  const double y = bb.ymin() + u() * (bb.ymax() - bb.ymin());
+  return Point_3(bb.xmin() + u() * (bb.xmax() - bb.xmin()), y, z);
+}
+
 // Samples up to `n` points inside the domain with a fixed seed, so that the estimate, and the
 // particle count derived from it, do not change from run to run.
 template <typename Domain, typename FrameField>
@@ -40,8 +51,7 @@ Det_b_samples sample_det_b(const Domain& domain, const FrameField& field, std::s
   double sum = 0., max = 0.;
   std::size_t inside = 0;
   for(std::size_t tries = 0; inside < n && tries < 200 * n; ++tries) {
-    const Point_3 p(bb.xmin() + u() * (bb.xmax() - bb.xmin()), bb.ymin() + u() * (bb.ymax() - bb.ymin()),
-                    bb.zmin() + u() * (bb.zmax() - bb.zmin()));
+    const Point_3 p = random_point<Point_3>(bb, u);
     if(!domain.is_inside(p)) continue;
     const double d = std::abs(isotropic_map(field.frame(p), p).determinant());
     sum += d;
