@@ -25,6 +25,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <iostream>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -250,18 +251,31 @@ public:
     Lattice_mesher_3::Tetrahedralization_options o;
     o.threads = p_.threads;
     o.edge_length = p_.edge_length;
+#ifdef CGAL_LATTICE_MESHER_3_VERBOSE
+    const auto start = std::chrono::steady_clock::now();
+    auto stage = [&](const char* name) {
+      std::cerr << "  [mesh] " << name << " done at "
+                << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
+    };
+#else
+    auto stage = [](const char*) {};
+#endif
     Mesh mesh = Lattice_mesher_3::tetrahedralize_particles(particles_, domain_, field_, o);
+    stage("tetrahedralization");
     // the shape-matching flips need a lattice to match: not for the hole-less kernel
     Lattice_mesher_3::Flip_options fo;
     if(lattice_.has_holes()) { fo.lattice = lattice_; fo.edge_length = p_.edge_length; }
     if(p_.flip) Lattice_mesher_3::flip_tetrahedra(mesh, field_, fo);
+    stage("flips");
     // smoothing moves vertices by a fraction of an edge: the connectivity already follows the
     // field, only the worst tetrahedra are flipped again
     Lattice_mesher_3::Smoothing_options so;
     so.threads = p_.threads;
     for(int round = 0; round < p_.smoothing_rounds; ++round) {
       if(Lattice_mesher_3::smooth_vertices(mesh, domain_, field_, so) == 0) break;
+      stage("smoothing");
       if(p_.flip) Lattice_mesher_3::flip_tetrahedra(mesh, field_);
+      stage("flips");
     }
     return mesh;
   }

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iostream>
 #include <vector>
 
 namespace CGAL {
@@ -46,10 +47,14 @@ struct Smoothing_options
 \ingroup PkgLatticeMesher3Flips
 
 Moves the vertices of the worst tetrahedra to lower the shortfall of their star's smallest
-dihedral angles (measured in the isotropic space of `field`) below a target: a pattern search over the axis and diagonal
-directions and the direction to the star's centroid, with steps of 30%, 10% and 3% of the star's mean edge length.
-Free vertices move freely, boundary vertices stay on the surface and sharp-edge vertices on the
-feature curves (each candidate is projected back), fixed vertices (corners) do not move. A move is
+dihedral angles (measured in the isotropic space of `field`) below a target: a pattern search
+with steps of 30%, 10% and 3% of the star's mean edge length over the direction to the star's
+centroid and the axis and diagonal directions: for free vertices the 6 axes and 8 diagonals, for
+boundary vertices the 8 directions of the tangent plane (the surface normal comes from
+`project_on_surface()`), for sharp-edge vertices the 2 of the curve's tangent. Boundary vertices
+stay on the surface and sharp-edge vertices on the feature curves (each candidate is projected
+back), fixed vertices (corners) do not move. After the first of `max_passes` passes, only
+vertices sharing a tetrahedron with a vertex moved in the previous pass are searched again. A move is
 kept only if no tetrahedron of the star is inverted (exact orientation tests), the shortfall
 falls and the star's smallest angle does not fall below the floor, so the boundary stays on the surface and the mesh stays valid. Needs
 `mesh.vertex_kinds`. Returns the number of moves.
@@ -116,12 +121,37 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
         if(w != v) { const Eigen::Vector3d y = internal::to_eigen(mesh.points[w]); centroid += y; mean_edge += (y - x).norm(); ++count; }
     centroid /= count;
     mean_edge /= count;
-    // the 6 axis and 8 diagonal directions, and the direction to the star's centroid
-    std::array<Eigen::Vector3d, 15> directions;
-    for(int a = 0; a < 6; ++a) { directions[a] = Eigen::Vector3d::Zero(); directions[a][a / 2] = (a % 2) ? -1. : 1.; }
-    for(int d = 0; d < 8; ++d)
-      directions[6 + d] = Eigen::Vector3d((d & 1) ? -1. : 1., (d & 2) ? -1. : 1., (d & 4) ? -1. : 1.) / std::sqrt(3.);
-    directions[14] = (centroid - x).normalized();
+    // Free vertices try the 6 axis and 8 diagonal directions; a boundary vertex only the 8 of
+    // its tangent plane and a sharp-edge vertex the 2 of its curve (the others are projected
+    // back to about where they started), each besides the direction to the star's centroid.
+    std::vector<Eigen::Vector3d> directions;
+    auto add_centroid_direction = [&](const Eigen::Vector3d& d) { if(d.norm() > 1e-3 * mean_edge) directions.push_back(d.normalized()); };
+    switch(mesh.vertex_kinds[v]) {
+      case Particle_kind::BOUNDARY: {
+        const Eigen::Vector3d n = internal::to_eigen(domain.project_on_surface(mesh.points[v]).direction).normalized();
+        if(!n.allFinite()) break;
+        const Eigen::Vector3d a = n.unitOrthogonal(), b = n.cross(a);
+        for(int k = 0; k < 8; ++k)
+          directions.push_back(std::cos(k * CGAL_PI / 4.) * a + std::sin(k * CGAL_PI / 4.) * b);
+        add_centroid_direction(centroid - x - n.dot(centroid - x) * n);
+        break;
+      }
+      case Particle_kind::SHARP_EDGE: {
+        const Eigen::Vector3d t = internal::to_eigen(domain.project_on_features(mesh.points[v]).direction).normalized();
+        if(!t.allFinite()) break;
+        directions.push_back(t);
+        directions.push_back(-t);
+        add_centroid_direction(t.dot(centroid - x) * t);
+        break;
+      }
+      default: break;
+    }
+    if(directions.empty()) {
+      for(int a = 0; a < 6; ++a) { directions.emplace_back(Eigen::Vector3d::Zero()); directions.back()[a / 2] = (a % 2) ? -1. : 1.; }
+      for(int d = 0; d < 8; ++d)
+        directions.push_back(Eigen::Vector3d((d & 1) ? -1. : 1., (d & 2) ? -1. : 1., (d & 4) ? -1. : 1.) / std::sqrt(3.));
+      add_centroid_direction(centroid - x);
+    }
     Score best = star_quality(v, mesh.points[v], HUGE_VAL);
     std::size_t accepted = 0;
     for(double step : { .3, .1, .03 })
@@ -138,6 +168,9 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
   };
 
   std::size_t moves = 0;
+  // A vertex whose star did not change since its last search would only search again: after the
+  // first pass, only the vertices sharing a tetrahedron with a moved one are candidates.
+  std::vector<char> active(mesh.points.size(), 1), moved(mesh.points.size(), 0);
   for(int pass = 0; pass < o.max_passes; ++pass) {
     for(std::size_t t = 0; t < mesh.tets.size(); ++t) {
       Eigen::Vector3d c = Eigen::Vector3d::Zero();
@@ -147,7 +180,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     std::vector<char> selected(mesh.points.size(), 0);
     for(std::size_t t = 0; t < mesh.tets.size(); ++t)
       if(tet_quality(t, -1, mesh.points[0]).first < o.select_angle)
-        for(int v : mesh.tets[t]) selected[v] = mesh.vertex_kinds[v] != Particle_kind::FIXED;
+        for(int v : mesh.tets[t]) selected[v] = active[v] && mesh.vertex_kinds[v] != Particle_kind::FIXED;
     // Greedy colouring: vertices of one colour share no tetrahedron, so their stars are moved in
     // parallel with the same result for any number of threads.
     std::vector<int> colour(mesh.points.size(), -1);
@@ -165,10 +198,21 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     std::size_t pass_moves = 0;
     for(const std::vector<int>& members : classes) {
 #pragma omp parallel for num_threads(o.threads) schedule(dynamic, 16) reduction(+:pass_moves)
-      for(std::ptrdiff_t k = 0; k < std::ptrdiff_t(members.size()); ++k)
-        pass_moves += move_vertex(members[k]);
+      for(std::ptrdiff_t k = 0; k < std::ptrdiff_t(members.size()); ++k) {
+        const std::size_t accepted = move_vertex(members[k]);
+        moved[members[k]] = accepted > 0;
+        pass_moves += accepted;
+      }
     }
+    std::fill(active.begin(), active.end(), 0);
+    for(std::size_t v = 0; v < mesh.points.size(); ++v)
+      if(moved[v]) for(int t : star[v]) for(int w : mesh.tets[t]) active[w] = 1;
+    std::fill(moved.begin(), moved.end(), 0);
     moves += pass_moves;
+#ifdef CGAL_LATTICE_MESHER_3_VERBOSE
+    std::cerr << "  smoothing pass " << pass << ": " << std::count(selected.begin(), selected.end(), 1)
+              << " vertices selected, " << pass_moves << " moves\n";
+#endif
     if(pass_moves == 0) break;
   }
   return moves;
