@@ -181,6 +181,49 @@ inline std::array<Eigen::Vector3d, 4> face_area_vectors(const Eigen::Vector3d& a
 inline double dihedral_angle(const std::array<Eigen::Vector3d, 4>& n, int i, int j)
 { return angle_degrees(n[i], -n[j]); }
 
+// The smallest dihedral angle from the face area vectors, found by its cosine. acos is precise
+// enough above 1 degree (a relative error of about 1e-14 / angle); below, atan2 (slivers).
+inline double smallest_angle_of_faces(const std::array<Eigen::Vector3d, 4>& n)
+{
+  std::array<double, 4> norm;
+  for(int i = 0; i < 4; ++i) norm[i] = n[i].norm();
+  int lo_i = 0, lo_j = 1;
+  double cos_lo = -2.;
+  for(int i = 0; i < 4; ++i)
+    for(int j = i + 1; j < 4; ++j) {
+      const double cosine = -n[i].dot(n[j]) / (norm[i] * norm[j]);
+      if(cosine > cos_lo) { cos_lo = cosine; lo_i = i; lo_j = j; }
+    }
+  return cos_lo < 0.9998 ? degrees_per_radian * std::acos(cos_lo) : dihedral_angle(n, lo_i, lo_j);
+}
+
+// Radius ratio from the face area vectors n1 = w x v, n2 = u x w, n3 = v x u (u = b - a,
+// v = c - a, w = d - a) and the squared length of the shortest edge:
+// r_circ = | |u|^2 v x w + |v|^2 w x u + |w|^2 u x v | / (2 |u.(v x w)|).
+inline double radius_ratio_of_faces(const std::array<Eigen::Vector3d, 4>& n, const Eigen::Vector3d& u,
+                                   const Eigen::Vector3d& v, const Eigen::Vector3d& w, double e_min2)
+{
+  const double six_volume = std::abs(u.dot(n[1]));
+  if(!(six_volume > 0.)) return 0.;
+  const double r_circ = (u.squaredNorm() * n[1] + v.squaredNorm() * n[2] + w.squaredNorm() * n[3]).norm() / (2. * six_volume);
+  return std::sqrt(6.) * std::sqrt(e_min2) / (4. * r_circ);
+}
+
+inline double shortest_squared_edge(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                                    const Eigen::Vector3d& d)
+{
+  return (std::min)({ (b - a).squaredNorm(), (c - a).squaredNorm(), (d - a).squaredNorm(), (c - b).squaredNorm(),
+                      (d - b).squaredNorm(), (d - c).squaredNorm() });
+}
+
+// Both at once, sharing the face area vectors (the hot loop of smooth_vertices()).
+inline std::pair<double, double> smallest_dihedral_angle_and_radius_ratio(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                                                          const Eigen::Vector3d& c, const Eigen::Vector3d& d)
+{
+  const std::array<Eigen::Vector3d, 4> n = face_area_vectors(a, b, c, d);
+  return { smallest_angle_of_faces(n), radius_ratio_of_faces(n, b - a, c - a, d - a, shortest_squared_edge(a, b, c, d)) };
+}
+
 } // namespace internal
 
 /*!
@@ -193,7 +236,7 @@ inline std::pair<double, double> dihedral_angle_range(const Eigen::Vector3d& a, 
 {
   const std::array<Eigen::Vector3d, 4> n = internal::face_area_vectors(a, b, c, d);
   // The extreme angles are found by their cosines; only those two go through atan2, which is
-  // precise near 0 and 180 degrees (the hot loops of flips and smoothing call this).
+  // precise near 0 and 180 degrees.
   std::array<double, 4> norm;
   for(int i = 0; i < 4; ++i) norm[i] = n[i].norm();
   int lo_i = 0, lo_j = 1, hi_i = 0, hi_j = 1;
@@ -210,23 +253,11 @@ inline std::pair<double, double> dihedral_angle_range(const Eigen::Vector3d& a, 
 /*!
 \ingroup PkgLatticeMesher3Quality
 Smallest interior dihedral angle (degrees) of the tetrahedron (a, b, c, d): the first of
-`dihedral_angle_range()` with one atan2 instead of two, for the hot loops of flips and smoothing.
+`dihedral_angle_range()`, by acos of its cosine above 1 degree (the hot loops of flips and smoothing).
 */
 inline double smallest_dihedral_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                       const Eigen::Vector3d& c, const Eigen::Vector3d& d)
-{
-  const std::array<Eigen::Vector3d, 4> n = internal::face_area_vectors(a, b, c, d);
-  std::array<double, 4> norm;
-  for(int i = 0; i < 4; ++i) norm[i] = n[i].norm();
-  int lo_i = 0, lo_j = 1;
-  double cos_lo = -2.;
-  for(int i = 0; i < 4; ++i)
-    for(int j = i + 1; j < 4; ++j) {
-      const double cosine = -n[i].dot(n[j]) / (norm[i] * norm[j]);
-      if(cosine > cos_lo) { cos_lo = cosine; lo_i = i; lo_j = j; }
-    }
-  return internal::dihedral_angle(n, lo_i, lo_j);
-}
+{ return internal::smallest_angle_of_faces(internal::face_area_vectors(a, b, c, d)); }
 
 /*!
 \ingroup PkgLatticeMesher3Quality
@@ -236,16 +267,8 @@ one, 0 for a degenerate one).
 inline double radius_ratio(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                            const Eigen::Vector3d& d)
 {
-  const Eigen::Vector3d u = b - a, v = c - a, w = d - a;
-  const double e_min2 = (std::min)({ u.squaredNorm(), v.squaredNorm(), w.squaredNorm(), (c - b).squaredNorm(),
-                                     (d - b).squaredNorm(), (d - c).squaredNorm() });
-  const double six_volume = std::abs(u.dot(v.cross(w)));
-  if(!(six_volume > 0.)) return 0.;
-  // r_circ = |circumcentre - a| = | |u|^2 v x w + |v|^2 w x u + |w|^2 u x v | / (2 u.(v x w))
-  const double r_circ =
-      (u.squaredNorm() * v.cross(w) + v.squaredNorm() * w.cross(u) + w.squaredNorm() * u.cross(v)).norm() /
-      (2. * six_volume);
-  return std::sqrt(6.) * std::sqrt(e_min2) / (4. * r_circ);
+  return internal::radius_ratio_of_faces(internal::face_area_vectors(a, b, c, d), b - a, c - a, d - a,
+                                        internal::shortest_squared_edge(a, b, c, d));
 }
 
 /*!

@@ -75,7 +75,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
   auto tet_quality = [&](std::size_t t, int moved, const Point_3& at) {
     std::array<Eigen::Vector3d, 4> p;
     for(int i = 0; i < 4; ++i) p[i] = maps[t] * internal::to_eigen(mesh.tets[t][i] == moved ? at : mesh.points[mesh.tets[t][i]]);
-    return std::make_pair(smallest_dihedral_angle(p[0], p[1], p[2], p[3]), radius_ratio(p[0], p[1], p[2], p[3]));
+    return internal::smallest_dihedral_angle_and_radius_ratio(p[0], p[1], p[2], p[3]);
   };
   // The star of v with v at `at`, scored by the sum over its tetrahedra of (target - angle)^2
   // for smallest angles below the target: a worst angle raised by a few degrees at the price of
