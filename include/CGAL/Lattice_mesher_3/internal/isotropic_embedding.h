@@ -73,9 +73,11 @@ std::vector<Vec3> isotropic_embedding(const std::vector<Vec3>& x, const FrameFie
     t.emplace_back(e[0], e[0], 1.); t.emplace_back(e[1], e[1], 1.);
     t.emplace_back(e[0], e[1], -1.); t.emplace_back(e[1], e[0], -1.);
   }
-  Eigen::SparseMatrix<double, Eigen::RowMajor> L{Eigen::Index(n), Eigen::Index(n)};
+  // Column-major: Eigen runs row-major sparse products on all OpenMP threads, whatever the
+  // thread count asked for (and spin-waits for a busy core).
+  Eigen::SparseMatrix<double> L{Eigen::Index(n), Eigen::Index(n)};
   L.setFromTriplets(t.begin(), t.end());
-  Eigen::ConjugateGradient<Eigen::SparseMatrix<double, Eigen::RowMajor>, Eigen::Lower | Eigen::Upper> cg(L);
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg(L);
   cg.setTolerance(1e-10);
   cg.setMaxIterations(int(10 * n) + 1000);
 
