@@ -96,6 +96,14 @@ TEST(Smooth_vertices, LowersTheShortfallRaisesTheWorstAngleAndKeepsVerticesOnThe
   EXPECT_LT(shortfall(mesh, field, o.target_angle), 0.9 * shortfall_before);
   const LM::Mesh_validity_report v = LM::check_tetrahedral_mesh(mesh);
   EXPECT_TRUE(v.valid()) << v.message;
+  // every kind but the corners is searched (boundary vertices in their tangent plane, sharp ones
+  // along their curve)
+  std::size_t moved[4] = { 0, 0, 0, 0 };
+  for(std::size_t i = 0; i < mesh.points.size(); ++i)
+    if(mesh.points[i] != original.points[i]) ++moved[int(mesh.vertex_kinds[i])];
+  EXPECT_GT(moved[int(LM::Particle_kind::FREE)], 0u);
+  EXPECT_GT(moved[int(LM::Particle_kind::BOUNDARY)], 0u);
+  EXPECT_GT(moved[int(LM::Particle_kind::SHARP_EDGE)], 0u);
   for(std::size_t i = 0; i < mesh.points.size(); ++i) {
     const double d = unit_cube().project_on_surface(mesh.points[i]).squared_distance;
     switch(mesh.vertex_kinds[i]) {
