@@ -60,7 +60,7 @@ struct Lattice_mesher_parameters
   Lattice_type lattice = Lattice_type::BCC;
   unsigned int seed = 0;               ///< random start; same seed and threads give the same mesh
   int threads = 1;
-  int max_rounds = -1;                 ///< MaxRoundNum; -1: 16 without a coarse level, 8 with
+  int max_rounds = -1;                 ///< MaxRoundNum; -1: 16 without a coarse level, 8 with, 30 without holes
   int coarse_levels = -1;              ///< k: start at 2^k l*; -1: the coarsest level with >= 16 vertices
   double sigma_ratio = 0.3;            ///< sigma / l_closest
   double neighbor_radius = 1.3;        ///< R / l*
@@ -122,18 +122,36 @@ public:
 
   /// Runs the whole particle optimization: random start at the coarsest level, rounds of
   /// L-BFGS with deletion and insertion, refinement to the next level, and a last tight round.
+  /// The hole-less kernel (Particle2013) has no lattice to insert along: its particles start at
+  /// the final count (`scatter_particles()`) and only move, in 30 rounds of 5 iterations (or
+  /// `max_rounds`), free particles kept inside and boundary ones on the boundary after each.
   template <typename Visitor>
   void optimize(Visitor& visitor)
   {
     using namespace Lattice_mesher_3;
     const auto start = std::chrono::steady_clock::now();
     auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    const bool lattice_guided = lattice_.has_holes();
     const int levels = coarse_levels();
-    const int max_rounds = p_.max_rounds >= 0 ? p_.max_rounds : (levels > 0 ? 8 : 16);
+    // Repulsion alone (no holes) pushes free particles out of the domain within a long round:
+    // short rounds snap them back before they get far.
+    const int short_round = 5;
+    const int max_rounds = p_.max_rounds >= 0 ? p_.max_rounds : (!lattice_guided ? 30 : levels > 0 ? 8 : 16);
+    auto remove = [&](const Optimization_options& o) {
+      return lattice_guided ? delete_particles(particles_, domain_, field_, lattice_, o) : std::size_t(0);
+    };
+    auto insert = [&](const Optimization_options& o) {
+      return lattice_guided ? insert_particles(particles_, domain_, field_, lattice_, o)
+                              + insert_feature_particles(particles_, domain_, field_, lattice_, o)
+                            : std::size_t(0);
+    };
 
     for(int level = levels; level >= 0; --level) {
       Optimization_options o = options(std::ldexp(p_.edge_length, level));
-      if(level == levels) initialize_particles(o.edge_length);
+      if(level == levels) {
+        if(lattice_guided) initialize_particles(o.edge_length);
+        else scatter_particles(o.edge_length);
+      }
       else refine_particles(particles_, domain_, field_, lattice_, o);
       auto report = [&](int round, const Optimization_result& r, std::size_t del, std::size_t ins, bool final_round) {
         Round_report rep;
@@ -142,21 +160,22 @@ public:
         rep.iterations = r.iterations; rep.energy = r.energy; rep.seconds = seconds();
         visitor.round_done(rep);
       };
-      o.max_iterations = 13;
+      o.max_iterations = lattice_guided ? 13 : short_round;
       Optimization_result r = optimize_particles_round(particles_, domain_, field_, lattice_, o);
       report(0, r, 0, 0, false);
       for(int round = 1; round <= max_rounds; ++round) {
-        const std::size_t del = delete_particles(particles_, domain_, field_, lattice_, o);
-        const std::size_t ins = insert_particles(particles_, domain_, field_, lattice_, o)
-                              + insert_feature_particles(particles_, domain_, field_, lattice_, o);
-        if(del + ins == 0) break;
-        o.max_iterations = round < 5 ? 13 : 8;
+        const std::size_t del = remove(o);
+        const std::size_t ins = insert(o);
+        if(lattice_guided && del + ins == 0) break;
+        o.max_iterations = !lattice_guided ? short_round : round < 5 ? 13 : 8;
         const double previous = r.energy;
         r = optimize_particles_round(particles_, domain_, field_, lattice_, o);
         report(round, r, del, ins, false);
         // Near a boundary that cuts the lattice obliquely, a few particles may be deleted and
         // re-inserted forever; once a round no longer lowers the energy, more rounds only churn.
-        if(round >= 4 && r.energy > previous - 1e-4 * std::abs(previous)) break;
+        // (Without holes the energy goes up and down as free particles are put back inside,
+        // while the packing still improves: all rounds run.)
+        if(lattice_guided && round >= 4 && r.energy > previous - 1e-4 * std::abs(previous)) break;
       }
     }
     // Rounds end with an optimization, so the last insertions are never checked against the
@@ -164,11 +183,10 @@ public:
     // tetrahedra below 40 degrees). A last deletion, insertion into the holes it leaves, and
     // deletion of what still does not fit close the loop.
     Optimization_options o = options(p_.edge_length);
-    std::size_t deleted = delete_particles(particles_, domain_, field_, lattice_, o);
-    const std::size_t inserted = insert_particles(particles_, domain_, field_, lattice_, o)
-                               + insert_feature_particles(particles_, domain_, field_, lattice_, o);
-    deleted += delete_particles(particles_, domain_, field_, lattice_, o);
-    o.max_iterations = 0;
+    std::size_t deleted = remove(o);
+    const std::size_t inserted = insert(o);
+    deleted += remove(o);
+    o.max_iterations = lattice_guided ? 0 : short_round;
     o.gradient_tolerance = p_.final_gradient_tolerance;
     const Optimization_result r = optimize_particles_round(particles_, domain_, field_, lattice_, o);
     Round_report rep;
@@ -194,19 +212,8 @@ public:
     for(std::size_t c = 0; c < domain_.corners().size(); ++c)
       particles_.push_back(domain_.corners()[c], Particle_kind::FIXED, int(c));
     const std::size_t n = std::size_t(std::llround(lattice_.density * isotropic_volume() / (l * l * l)));
-    const CGAL::Bbox_3 bb = domain_.bbox();
-    const double max_det = det_b_samples().max * 1.25;
     Uniform u(p_.seed);
-    // a random point inside, uniform in the isotropic space; false after many misses
-    auto sample = [&](Point_3& p) {
-      for(int tries = 0; tries < 100000; ++tries) {
-        p = Lattice_mesher_3::internal::random_point<Point_3>(bb, u);
-        const double accept = u();
-        if(domain_.is_inside(p) &&
-           accept * max_det <= std::abs(Lattice_mesher_3::internal::isotropic_map(field_.frame(p), p).determinant())) return true;
-      }
-      return false;
-    };
+    auto sample = [&](Point_3& p) { return random_inside(u, p); };
     Point_3 deep, p;
     double depth = -1.;
     for(int k = 0; k < 256 && sample(p); ++k) {
@@ -238,6 +245,31 @@ public:
         if(!covered) { particles_.push_back(p, Particle_kind::FREE); seeded = true; }
       }
       if(!seeded) break;
+    }
+    if(particles_.size() < 4)
+      throw std::invalid_argument("Lattice_particle_mesher_3: could not place particles inside the domain "
+                                  "(is it empty, or the edge length larger than the domain?)");
+  }
+
+  /// The start of Particle2013 at edge length `l`: a fixed particle at every corner of the
+  /// domain, boundary particles at the density of a lattice face (area / l^2 in the isotropic
+  /// space), each a random inside point projected on the surface, and free ones up to the vertex
+  /// count of the lattice (`expected_vertices()`), uniform in the isotropic space. Replaces the
+  /// current particles.
+  void scatter_particles(double l)
+  {
+    using namespace Lattice_mesher_3;
+    particles_.clear();
+    for(std::size_t c = 0; c < domain_.corners().size(); ++c)
+      particles_.push_back(domain_.corners()[c], Particle_kind::FIXED, int(c));
+    const double n = expected_vertices(l) - double(domain_.corners().size());
+    const double scale = std::cbrt(det_b_samples().mean);   // isotropic length per unit length
+    const double on_surface = (std::min)(n, domain_.area() * scale * scale / (l * l));
+    Uniform u(p_.seed);
+    Point_3 p;
+    for(double k = 0.; k < n && random_inside(u, p); ++k) {
+      if(k < on_surface) particles_.push_back(domain_.project_on_surface(p).point, Particle_kind::BOUNDARY);
+      else particles_.push_back(p, Particle_kind::FREE);
     }
     if(particles_.size() < 4)
       throw std::invalid_argument("Lattice_particle_mesher_3: could not place particles inside the domain "
@@ -318,14 +350,15 @@ public:
     return std::sqrt(lo * hi);
   }
 
-  /// The number k of coarse levels: as given, or the largest k <= 4 at which the coarse lattice
-  /// still has 16 vertices and can follow the field: its stretch changes by at most 25% along a
-  /// coarse cube edge (`field_variation()`). Few particles at the start form one lattice grain
+  /// The number k of coarse levels (none for the hole-less kernel): as given, or the largest
+  /// k <= 4 at which the coarse lattice still has 16 vertices and can follow the field: its
+  /// stretch changes by at most 25% along a coarse cube edge (`field_variation()`). Few particles at the start form one lattice grain
   /// instead of many with mismatched offsets, which refinement then propagates to the final edge
   /// length; but a coarse lattice across which the field varies (fig8: B doubles along a cube
   /// edge at k = 2) is no lattice of the fine field, and refinement propagates its defects.
   int coarse_levels() const
   {
+    if(!lattice_.has_holes()) return 0;   // no lattice to refine
     if(p_.coarse_levels >= 0) return p_.coarse_levels;
     int k = 0;
     while(k < max_coarse_levels && expected_vertices(std::ldexp(p_.edge_length, k + 1)) >= 16. &&
@@ -376,6 +409,7 @@ private:
     o.neighbor_radius = p_.neighbor_radius;
     o.gradient_tolerance = p_.gradient_tolerance;
     o.threads = p_.threads;
+    o.free_particles_join_boundary = lattice_.has_holes();
     return o;
   }
 
@@ -386,6 +420,21 @@ private:
     explicit Uniform(unsigned int seed) : g(seed) {}
     double operator()() { return double(g() >> 11) * 0x1.0p-53; }
   };
+
+  // A random point inside, uniform in the isotropic space (rejection by |det B|); false after
+  // many misses.
+  bool random_inside(Uniform& u, Point_3& p) const
+  {
+    const CGAL::Bbox_3 bb = domain_.bbox();
+    const double max_det = det_b_samples().max * 1.25;
+    for(int tries = 0; tries < 100000; ++tries) {
+      p = Lattice_mesher_3::internal::random_point<Point_3>(bb, u);
+      const double accept = u();
+      if(domain_.is_inside(p) &&
+         accept * max_det <= std::abs(Lattice_mesher_3::internal::isotropic_map(field_.frame(p), p).determinant())) return true;
+    }
+    return false;
+  }
 
   Lattice_mesher_3::internal::Det_b_samples det_b_samples() const
   {

@@ -53,7 +53,8 @@ them (`tetrahedralize_particles()`).
     \cgalParamType{double}
   \cgalParamNEnd
   \cgalParamNBegin{lattice}
-    \cgalParamDescription{the lattice; `Lattice_type::GAUSSIAN` is the hole-less kernel of Particle2013}
+    \cgalParamDescription{the lattice; `Lattice_type::GAUSSIAN` is the hole-less kernel of Particle2013
+      (a random start at the final count, no insertion or deletion: the baseline)}
     \cgalParamType{`CGAL::Lattice_mesher_3::Lattice_type`}
     \cgalParamDefault{`Lattice_type::BCC`}
   \cgalParamNEnd

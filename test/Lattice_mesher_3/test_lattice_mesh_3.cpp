@@ -93,6 +93,40 @@ TEST_P(Cube_lattice, InteriorFormsThePerfectLatticeAndTheMeshIsValid)
 
 INSTANTIATE_TEST_SUITE_P(Lattices, Cube_lattice, ::testing::Values(LM::Lattice_type::BCC, LM::Lattice_type::FCC));
 
+// Particle2013's baseline: the hole-less kernel starts at the final count and keeps it (no
+// insertion or deletion), its free particles stay inside and its boundary particles on the
+// boundary; it forms no lattice, so its edges follow no axis, yet its mesh is valid and fair
+// (cube, 1,500 vertices: mean smallest dihedral angle 53.3, alignment error 21.4 degrees).
+TEST(Lattice_mesh_3, HolelessKernelKeepsItsCountAndFormsNoLattice)
+{
+  LM::Lattice_mesher_parameters p;
+  p.lattice = LM::Lattice_type::GAUSSIAN;
+  p.number_of_vertices = 1500;
+  p.threads = 2;
+  const Field field;
+  CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> mesher(cube(), field, p);
+  EXPECT_EQ(mesher.coarse_levels(), 0);
+  mesher.optimize();
+  const LM::Particle_set_3<Point_3>& ps = mesher.particles();
+  EXPECT_NEAR(double(ps.size()), 1500., 1.);
+  for(std::size_t i = 0; i < ps.size(); ++i) {
+    const double d = std::sqrt(cube().project_on_surface(ps.points[i]).squared_distance);
+    if(ps.kinds[i] == LM::Particle_kind::FREE)
+      EXPECT_TRUE(cube().is_inside(ps.points[i]) && d > 0.29 * mesher.edge_length()) << "free particle " << i << " at " << d;
+    else
+      EXPECT_LT(d, 1e-9) << "particle " << i << " off the boundary";
+  }
+  EXPECT_LT(lattice_fraction(ps, mesher.lattice(), mesher.edge_length()), 0.05);
+
+  const LM::Tetrahedral_mesh_3<Point_3> mesh = mesher.tetrahedralize();
+  const LM::Mesh_validity_report r = LM::check_tetrahedral_mesh(mesh);
+  EXPECT_TRUE(r.valid()) << r.message;
+  EXPECT_EQ(mesh.points.size(), ps.size());
+  const LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, mesher.lattice());
+  EXPECT_GT(q.theta_min.mean, 50.);
+  EXPECT_GT(q.epsilon.mean, 15.);
+}
+
 TEST(Lattice_mesh_3, NamedParametersAndDeterminism)
 {
   const Field field;

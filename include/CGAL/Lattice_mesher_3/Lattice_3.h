@@ -33,7 +33,8 @@ isotropic space; the stages scale them by the target edge length l*.
   and the alignment error of an edge is its angle to the closest O_k.
 - `holes` are the centres of the kernel's negative Gaussians (the Gaussian Hole Kernel).
   For BCC and FCC they are the one-ring; the hole-less isotropic Gaussian kernel of
-  Particle2013 has none and keeps the BCC one-ring for insertion and deletion.
+  Particle2013 has none: it keeps BCC's density for the vertex count and BCC's one-ring for
+  the alignment error, and the mesher neither inserts nor deletes its particles.
 - `closest_distance` is l_closest / l*, `density` the number of lattice points per unit cube.
 
 A new lattice (A15, ...) is one more hole set: no stage depends on which lattice it runs.

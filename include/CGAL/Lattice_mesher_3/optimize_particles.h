@@ -39,6 +39,10 @@ struct Optimization_options
   int max_iterations = 13;          ///< MaxIts; 0 = until converged (at most `iteration_cap`)
   int iteration_cap = 1000;         ///< bound on a round without MaxIts, so that it always ends
   double boundary_distance = 0.3;   ///< particles this close (x l*) to the boundary / an edge snap to it
+  /// false: a free particle that leaves the domain or comes that close to its boundary is put
+  /// back inside at `boundary_distance` and stays free (a fixed number of boundary particles, as
+  /// in Particle2013, whose hole-less kernel would otherwise push the interior onto the boundary)
+  bool free_particles_join_boundary = true;
   int threads = 1;
 };
 
@@ -161,7 +165,8 @@ std::vector<Mat3> motion_maps(const Particle_set_3<Point_3>& ps, const Domain& d
 Snaps particles to their constraints after an optimization round (Alg. 1, lines 14-21): a
 free particle outside the domain, or inside within `boundary_distance` x l* of the boundary
 (measured in the isotropic space of the field), is projected on the boundary and becomes a
-boundary particle; a boundary particle that close to a sharp edge is projected on it and becomes
+boundary particle (or, without `free_particles_join_boundary`, is put back inside at that
+distance along the inward normal); a boundary particle that close to a sharp edge is projected on it and becomes
 a sharp-edge particle. Boundary and sharp-edge particles, which slid along tangent planes and
 lines, are put back on their surface and curve. Returns the number of particles that changed kind.
 */
@@ -182,8 +187,22 @@ std::size_t snap_particles_to_boundary(Particle_set_3<Point_3>& ps, const Domain
     const Eigen::Matrix3d B = internal::isotropic_map(field.frame(p), p);
     const auto s = domain.project_on_surface(p);
     if(kind == Particle_kind::FREE) {
-      if(domain.is_inside(p) && (B * (internal::to_eigen(p) - internal::to_eigen(s.point))).norm() > threshold)
+      auto clearance = [&](const Point_3& q, const decltype(s)& sq) {   // isotropic; -1 outside
+        return domain.is_inside(q) ? (B * (internal::to_eigen(q) - internal::to_eigen(sq.point))).norm() : -1.;
+      };
+      if(clearance(p, s) > threshold) continue;
+      if(!o.free_particles_join_boundary) {
+        // back inside along the inward normal; next to an edge or a corner that may land on
+        // the next face, whose normal the next step follows
+        auto t = s;
+        for(int step = 0; step < 3 && (step == 0 || clearance(p, t) < 0.999 * threshold); ++step) {
+          const Vec3 n = internal::to_eigen(t.direction);
+          const Vec3 q = internal::to_eigen(t.point) - n * (threshold / (std::max)((B * n).norm(), 1e-300));
+          p = Point_3(q[0], q[1], q[2]);
+          t = domain.project_on_surface(p);
+        }
         continue;
+      }
       kind = Particle_kind::BOUNDARY;
       ++changed;
     }
