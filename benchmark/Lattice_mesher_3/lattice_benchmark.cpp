@@ -74,7 +74,7 @@ static const char* usage =
   "                         [--seed S] [--no-tuning] [-o OUT.mesh] [--stats OUT.json]\n"
   "                         [--histograms OUT.csv]\n"
   "  INPUT         closed triangle surface (OFF, OBJ, STL, PLY); --domain cube is [0.1,1.1]^3\n"
-  "  --method      bcc, fcc: ours; gaussian: ours with the hole-less kernel of Particle2013;\n"
+  "  --method      bcc, fcc: ours; gaussian: Particle2013 (hole-less kernel, fixed count);\n"
   "                cvt, odt: CGAL Mesh_3 with Lloyd or ODT, no perturbation, no exudation;\n"
   "                cvt-pe, odt-pe: the same followed by CGAL's default perturbation and exudation;\n"
   "                tetgen: TetGen -pq with a maximum volume\n"

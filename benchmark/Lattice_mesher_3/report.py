@@ -61,7 +61,8 @@ NOTES = """- Every method meshes the same validated surface (closed, not self-in
 - CVT and ODT: `make_mesh_3` with `lloyd()` / `odt()` at CGAL's defaults on a
   `Polyhedral_mesh_domain_with_features_3` with the same 60° features as ours; raw rows without
   the sliver perturber and exuder (the paper's rows), "+ perturb + exude" rows with CGAL's
-  defaults, as a CGAL user runs it. Particle2013: our pipeline with the hole-less Gaussian kernel.
+  defaults, as a CGAL user runs it. Particle2013: the hole-less Gaussian kernel as published, from
+  a random start at the final count, no insertion or deletion, then our flips and smoothing.
 - Every mesh is measured by `compute_mesh_quality()` with the identity field; ε is measured
   against the FCC one-ring for ours with FCC and against the BCC one-ring for every other method.
   ‡ marks a mesh that fails `check_tetrahedral_mesh()` (see its log)."""

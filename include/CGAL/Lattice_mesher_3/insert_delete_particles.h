@@ -143,10 +143,16 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
           internal::search_isotropic_ball(search, x[i], frames.T[i], offset_radius * l + block, frames.max_stretch, around);
           around_of = std::ptrdiff_t(i);
         }
-        bool occupied = false;
-        for(std::size_t j : around) occupied = occupied || (frames.B[i] * (q - x[j])).norm() < block;
+        // inside without a test when within the clearance of i or of a particle occupying it
+        bool occupied = false, inside = (q - x[i]).norm() < clearance[i];
+        for(std::size_t j : around)
+          if((frames.B[i] * (q - x[j])).norm() < block) {
+            occupied = true;
+            inside = inside || (q - x[j]).norm() < clearance[j];
+            if(inside) break;
+          }
         Point_3 p(q[0], q[1], q[2]);
-        const bool inside = (q - x[i]).norm() < clearance[i] || domain.is_inside(p);
+        inside = inside || domain.is_inside(p);
         if(occupied && inside) continue;
         cd.kind = Particle_kind::FREE;
         cd.feature = -1;
@@ -167,12 +173,15 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
         cd.p = p;
         const Mat3 T = field.frame(p);
         cd.B = internal::isotropic_map(T, p);
-        // a candidate that can never be accepted is dropped before its energy is computed
+        // a candidate that can never be accepted is dropped before its energy is computed; most
+        // that were projected on the boundary fall on a neighbour of i: no search for them
+        bool blocked = false;
+        for(std::size_t j : around) if((cd.B * (q - x[j])).norm() < block) { blocked = true; break; }
+        if(blocked) continue;
         near.clear();
         internal::search_isotropic_ball(search, q, T, (std::max)(min_distance, kernel.support_radius() * l),
                                         frames.max_stretch, near);
         double e = 0.;
-        bool blocked = false;
         for(std::size_t j : near) {
           const Vec3 v = cd.B * (q - x[j]);
           if(v.norm() < block) { blocked = true; break; }
