@@ -54,8 +54,8 @@ struct Smoothing_options
 
 Moves the vertices of the worst tetrahedra to lower the shortfall of their star's smallest
 dihedral angles (measured in the isotropic space of `field`) below a target: a pattern search
-with steps of 30%, 10% and 3% of the star's mean edge length over the direction to the star's
-centroid and the axis and diagonal directions: for free vertices the 6 axes and 8 diagonals, for
+with steps of 30%, 10% and 3% of the star's mean edge length (all lengths in the isotropic space
+of B at the vertex) over the direction to the star's centroid and the axis and diagonal directions: for free vertices the 6 axes and 8 diagonals, for
 boundary vertices the 8 directions of the tangent plane (the surface normal comes from
 `project_on_surface()`), for sharp-edge vertices the 2 of the curve's tangent. Boundary vertices
 stay on the surface and sharp-edge vertices on the feature curves (each candidate is projected
@@ -120,19 +120,22 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
   // pattern search for vertex v; returns the number of accepted moves
   auto move_vertex = [&](int v) -> std::size_t {
     const Eigen::Vector3d x = internal::to_eigen(mesh.points[v]);
+    // Steps are measured in the isotropic space (B at v): under a strong stretch (fig9's radial
+    // 20, fig8's 80) a Euclidean step fit for the long edges would jump across the short ones.
+    const Eigen::Matrix3d b = internal::isotropic_map_at<Point_3>(field, x);
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-    double mean_edge = 0.;
+    double mean_edge = 0.;   // isotropic
     int count = 0;
     for(int t : star[v])
       for(int w : mesh.tets[t])
-        if(w != v) { const Eigen::Vector3d y = internal::to_eigen(mesh.points[w]); centroid += y; mean_edge += (y - x).norm(); ++count; }
+        if(w != v) { const Eigen::Vector3d y = internal::to_eigen(mesh.points[w]); centroid += y; mean_edge += (b * (y - x)).norm(); ++count; }
     centroid /= count;
     mean_edge /= count;
     // Free vertices try the 6 axis and 8 diagonal directions; a boundary vertex only the 8 of
     // its tangent plane and a sharp-edge vertex the 2 of its curve (the others are projected
     // back to about where they started), each besides the direction to the star's centroid.
     std::vector<Eigen::Vector3d> directions;
-    auto add_centroid_direction = [&](const Eigen::Vector3d& d) { if(d.norm() > 1e-3 * mean_edge) directions.push_back(d.normalized()); };
+    auto add_centroid_direction = [&](const Eigen::Vector3d& d) { if((b * d).norm() > 1e-3 * mean_edge) directions.push_back(d.normalized()); };
     switch(mesh.vertex_kinds[v]) {
       case Particle_kind::BOUNDARY: {
         const Eigen::Vector3d n = internal::to_eigen(domain.project_on_surface(mesh.points[v]).direction).normalized();
@@ -159,6 +162,8 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
         directions.push_back(Eigen::Vector3d((d & 1) ? -1. : 1., (d & 2) ? -1. : 1., (d & 4) ? -1. : 1.) / std::sqrt(3.));
       add_centroid_direction(centroid - x);
     }
+    // each direction scaled to unit isotropic length (exactly as it is when B = I)
+    for(Eigen::Vector3d& d : directions) d *= d.norm() / (b * d).norm();
     Score best = star_quality(v, mesh.points[v], HUGE_VAL);
     std::size_t accepted = 0;
     for(double step : { .3, .1, .03 })
