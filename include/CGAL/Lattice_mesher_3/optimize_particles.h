@@ -166,8 +166,8 @@ Snaps particles to their constraints after an optimization round (Alg. 1, lines 
 free particle outside the domain, or inside within `boundary_distance` x l* of the boundary
 (measured in the isotropic space of the field), is projected on the boundary and becomes a
 boundary particle (or, without `free_particles_join_boundary`, is put back inside at that
-distance along the inward normal); a boundary particle that close to a sharp edge is projected on it and becomes
-a sharp-edge particle. Boundary and sharp-edge particles, which slid along tangent planes and
+distance along the inward normal); a boundary particle that close to a sharp edge is projected
+on it and becomes a sharp-edge particle. Boundary and sharp-edge particles, which slid along tangent planes and
 lines, are put back on their surface and curve. Returns the number of particles that changed kind.
 */
 template <typename Domain, typename FrameField, typename Point_3>

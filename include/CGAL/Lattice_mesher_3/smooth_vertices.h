@@ -53,16 +53,17 @@ struct Smoothing_options
 \ingroup PkgLatticeMesher3Flips
 
 Moves the vertices of the worst tetrahedra to lower the shortfall of their star's smallest
-dihedral angles (measured in the isotropic space of `field`) below a target: a pattern search
-with steps of 30%, 10% and 3% of the star's mean edge length (all lengths in the isotropic space
-of B at the vertex) over the direction to the star's centroid and the axis and diagonal directions: for free vertices the 6 axes and 8 diagonals, for
-boundary vertices the 8 directions of the tangent plane (the surface normal comes from
-`project_on_surface()`), for sharp-edge vertices the 2 of the curve's tangent. Boundary vertices
-stay on the surface and sharp-edge vertices on the feature curves (each candidate is projected
-back), fixed vertices (corners) do not move. After the first of `max_passes` passes, only
-vertices sharing a tetrahedron with a vertex moved in the previous pass are searched again. A move is
-kept only if no tetrahedron of the star is inverted (exact orientation tests), the shortfall
-falls and the star's smallest angle does not fall below the floor, so the boundary stays on the surface and the mesh stays valid. Needs
+dihedral angles (measured in the isotropic space of `field`) below a target: a pattern search with
+steps of 30%, 10% and 3% of the star's mean edge length (lengths in the isotropic space of a
+tetrahedron of the star) over the direction to the star's centroid and the axis and diagonal
+directions: for free vertices the 6 axes and 8 diagonals, for boundary vertices the 8 directions
+of the tangent plane (the surface normal comes from `project_on_surface()`), for sharp-edge
+vertices the 2 of the curve's tangent. Boundary vertices stay on the surface and sharp-edge
+vertices on the feature curves (each candidate is projected back), fixed vertices (corners) do not
+move. After the first of `max_passes` passes, only vertices sharing a tetrahedron with a vertex
+moved in the previous pass are searched again. A move is kept only if no tetrahedron of the star
+is inverted (exact orientation tests), the shortfall falls and the star's smallest angle does not
+fall below the floor, so the boundary stays on the surface and the mesh stays valid. Needs
 `mesh.vertex_kinds`. Returns the number of moves.
 */
 template <typename Point_3, typename Domain, typename FrameField>
@@ -120,9 +121,10 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
   // pattern search for vertex v; returns the number of accepted moves
   auto move_vertex = [&](int v) -> std::size_t {
     const Eigen::Vector3d x = internal::to_eigen(mesh.points[v]);
-    // Steps are measured in the isotropic space (B at v): under a strong stretch (fig9's radial
-    // 20, fig8's 80) a Euclidean step fit for the long edges would jump across the short ones.
-    const Eigen::Matrix3d b = internal::isotropic_map_at<Point_3>(field, x);
+    // Steps are measured in the isotropic space (the frozen B of a tetrahedron of the star):
+    // under a strong stretch (fig9's radial 20, fig8's 80) a Euclidean step fit for the long
+    // edges would jump across the short ones.
+    const Eigen::Matrix3d& b = maps[star[v].front()];
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
     double mean_edge = 0.;   // isotropic
     int count = 0;
