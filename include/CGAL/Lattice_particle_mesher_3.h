@@ -131,25 +131,22 @@ public:
     using namespace Lattice_mesher_3;
     const auto start = std::chrono::steady_clock::now();
     auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-    const bool lattice_guided = lattice_.has_holes();
+    const Schedule sc = schedule();
     const int levels = coarse_levels();
-    // Repulsion alone (no holes) pushes free particles out of the domain within a long round:
-    // short rounds snap them back before they get far.
-    const int short_round = 5;
-    const int max_rounds = p_.max_rounds >= 0 ? p_.max_rounds : (!lattice_guided ? 30 : levels > 0 ? 8 : 16);
+    const int max_rounds = p_.max_rounds >= 0 ? p_.max_rounds : levels > 0 ? sc.rounds_after_coarse : sc.rounds;
     auto remove = [&](const Optimization_options& o) {
-      return lattice_guided ? delete_particles(particles_, domain_, field_, lattice_, o) : std::size_t(0);
+      return sc.grow ? delete_particles(particles_, domain_, field_, lattice_, o) : std::size_t(0);
     };
     auto insert = [&](const Optimization_options& o) {
-      return lattice_guided ? insert_particles(particles_, domain_, field_, lattice_, o)
-                              + insert_feature_particles(particles_, domain_, field_, lattice_, o)
-                            : std::size_t(0);
+      return sc.grow ? insert_particles(particles_, domain_, field_, lattice_, o)
+                       + insert_feature_particles(particles_, domain_, field_, lattice_, o)
+                     : std::size_t(0);
     };
 
     for(int level = levels; level >= 0; --level) {
       Optimization_options o = options(std::ldexp(p_.edge_length, level));
       if(level == levels) {
-        if(lattice_guided) initialize_particles(o.edge_length);
+        if(sc.grow) initialize_particles(o.edge_length);
         else scatter_particles(o.edge_length);
       }
       else refine_particles(particles_, domain_, field_, lattice_, o);
@@ -160,22 +157,20 @@ public:
         rep.iterations = r.iterations; rep.energy = r.energy; rep.seconds = seconds();
         visitor.round_done(rep);
       };
-      o.max_iterations = lattice_guided ? 13 : short_round;
+      o.max_iterations = sc.early_iterations;
       Optimization_result r = optimize_particles_round(particles_, domain_, field_, lattice_, o);
       report(0, r, 0, 0, false);
       for(int round = 1; round <= max_rounds; ++round) {
         const std::size_t del = remove(o);
         const std::size_t ins = insert(o);
-        if(lattice_guided && del + ins == 0) break;
-        o.max_iterations = !lattice_guided ? short_round : round < 5 ? 13 : 8;
+        if(sc.grow && del + ins == 0) break;
+        o.max_iterations = round < 5 ? sc.early_iterations : sc.late_iterations;
         const double previous = r.energy;
         r = optimize_particles_round(particles_, domain_, field_, lattice_, o);
         report(round, r, del, ins, false);
         // Near a boundary that cuts the lattice obliquely, a few particles may be deleted and
         // re-inserted forever; once a round no longer lowers the energy, more rounds only churn.
-        // (Without holes the energy goes up and down as free particles are put back inside,
-        // while the packing still improves: all rounds run.)
-        if(lattice_guided && round >= 4 && r.energy > previous - 1e-4 * std::abs(previous)) break;
+        if(sc.grow && round >= 4 && r.energy > previous - 1e-4 * std::abs(previous)) break;
       }
     }
     // Rounds end with an optimization, so the last insertions are never checked against the
@@ -186,7 +181,7 @@ public:
     std::size_t deleted = remove(o);
     const std::size_t inserted = insert(o);
     deleted += remove(o);
-    o.max_iterations = lattice_guided ? 0 : short_round;
+    o.max_iterations = sc.final_iterations;
     o.gradient_tolerance = p_.final_gradient_tolerance;
     const Optimization_result r = optimize_particles_round(particles_, domain_, field_, lattice_, o);
     Round_report rep;
@@ -208,9 +203,7 @@ public:
   {
     using namespace Lattice_mesher_3;
     typedef typename MeshDomain::Geom_traits K;
-    particles_.clear();
-    for(std::size_t c = 0; c < domain_.corners().size(); ++c)
-      particles_.push_back(domain_.corners()[c], Particle_kind::FIXED, int(c));
+    start_at_corners();
     const std::size_t n = std::size_t(std::llround(lattice_.density * isotropic_volume() / (l * l * l)));
     Uniform u(p_.seed);
     auto sample = [&](Point_3& p) { return random_inside(u, p); };
@@ -221,9 +214,7 @@ public:
       const double d = (b * (Lattice_mesher_3::internal::to_eigen(p) - Lattice_mesher_3::internal::to_eigen(domain_.project_on_surface(p).point))).norm();
       if(d > depth) { depth = d; deep = p; }
     }
-    if(depth < 0.)
-      throw std::invalid_argument("Lattice_particle_mesher_3: could not place particles inside the domain "
-                                  "(is it empty, or the edge length larger than the domain?)");
+    if(depth < 0.) cannot_place_particles();
     particles_.push_back(deep, Particle_kind::FREE);
     Optimization_options o = options(l);
     o.max_iterations = 5;
@@ -246,9 +237,7 @@ public:
       }
       if(!seeded) break;
     }
-    if(particles_.size() < 4)
-      throw std::invalid_argument("Lattice_particle_mesher_3: could not place particles inside the domain "
-                                  "(is it empty, or the edge length larger than the domain?)");
+    if(particles_.size() < 4) cannot_place_particles();
   }
 
   /// The start of Particle2013 at edge length `l`: a fixed particle at every corner of the
@@ -259,9 +248,7 @@ public:
   void scatter_particles(double l)
   {
     using namespace Lattice_mesher_3;
-    particles_.clear();
-    for(std::size_t c = 0; c < domain_.corners().size(); ++c)
-      particles_.push_back(domain_.corners()[c], Particle_kind::FIXED, int(c));
+    start_at_corners();
     const double n = expected_vertices(l) - double(domain_.corners().size());
     const double scale = std::cbrt(det_b_samples().mean);   // isotropic length per unit length
     const double on_surface = (std::min)(n, domain_.area() * scale * scale / (l * l));
@@ -271,9 +258,7 @@ public:
       if(k < on_surface) particles_.push_back(domain_.project_on_surface(p).point, Particle_kind::BOUNDARY);
       else particles_.push_back(p, Particle_kind::FREE);
     }
-    if(particles_.size() < 4)
-      throw std::invalid_argument("Lattice_particle_mesher_3: could not place particles inside the domain "
-                                  "(is it empty, or the edge length larger than the domain?)");
+    if(particles_.size() < 4) cannot_place_particles();
   }
 
   /// Connects the current particles into a tetrahedral mesh, then improves its worst tetrahedra
@@ -358,7 +343,7 @@ public:
   /// edge at k = 2) is no lattice of the fine field, and refinement propagates its defects.
   int coarse_levels() const
   {
-    if(!lattice_.has_holes()) return 0;   // no lattice to refine
+    if(!schedule().grow) return 0;   // no lattice to refine
     if(p_.coarse_levels >= 0) return p_.coarse_levels;
     int k = 0;
     while(k < max_coarse_levels && expected_vertices(std::ldexp(p_.edge_length, k + 1)) >= 16. &&
@@ -402,6 +387,40 @@ private:
   static constexpr double max_particles = 5e7;
   static constexpr int max_coarse_levels = 4;
 
+  // How the rounds run. The lattice kernel grows its grain by deletion and insertion and stops
+  // once nothing changes or the energy no longer falls; its closing round runs to the tight
+  // tolerance. The hole-less kernel (Particle2013) has no lattice to insert along: it only moves
+  // its fixed count, in short rounds, because repulsion alone pushes free particles out of the
+  // domain within a long one; between rounds they are put back inside instead of joining the
+  // boundary, and the energy goes up and down as they are, so all rounds run.
+  struct Schedule
+  {
+    bool grow;                  // deletion, insertion, stop when settled; free particles may join the boundary
+    int early_iterations, late_iterations;   // L-BFGS iterations of rounds 0-4 and of later ones
+    int rounds, rounds_after_coarse;         // MaxRoundNum without and with a coarse level
+    int final_iterations;       // of the closing round; 0: until the tight tolerance
+  };
+
+  Schedule schedule() const
+  {
+    if(lattice_.has_holes()) return Schedule{true, 13, 8, 16, 8, 0};
+    return Schedule{false, 5, 5, 30, 30, 5};
+  }
+
+  // Replaces the particles by a fixed one at every corner of the domain.
+  void start_at_corners()
+  {
+    particles_.clear();
+    for(std::size_t c = 0; c < domain_.corners().size(); ++c)
+      particles_.push_back(domain_.corners()[c], Lattice_mesher_3::Particle_kind::FIXED, int(c));
+  }
+
+  [[noreturn]] static void cannot_place_particles()
+  {
+    throw std::invalid_argument("Lattice_particle_mesher_3: could not place particles inside the domain "
+                                "(is it empty, or the edge length larger than the domain?)");
+  }
+
   Lattice_mesher_3::Optimization_options options(double l) const
   {
     Lattice_mesher_3::Optimization_options o;
@@ -409,7 +428,7 @@ private:
     o.neighbor_radius = p_.neighbor_radius;
     o.gradient_tolerance = p_.gradient_tolerance;
     o.threads = p_.threads;
-    o.free_particles_join_boundary = lattice_.has_holes();
+    o.free_particles_join_boundary = schedule().grow;
     return o;
   }
 
