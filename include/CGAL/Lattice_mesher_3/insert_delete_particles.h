@@ -135,7 +135,11 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
       cd.keep = false;
       try {
         const std::size_t i = n - sources + std::size_t(c) / m, k = std::size_t(c) % m;
+        // the lattice offset in the frame at the candidate's midpoint with i: under a varying
+        // field, i's own frame would put the candidates on its side of a gradient too far apart
         Vec3 q = x[i] + l * (frames.T[i] * offsets[k]);
+        const Vec3 mid = .5 * (x[i] + q);
+        q = x[i] + l * (field.frame(Point_3(mid[0], mid[1], mid[2])) * offsets[k]);
         // Most candidates fall on a particle (the lattice around i is already there): drop them
         // with i's neighbours, one search per particle, before any per-candidate search.
         if(around_of != std::ptrdiff_t(i)) {

@@ -21,6 +21,7 @@
 #include <LBFGS.h>
 
 #include <algorithm>
+#include <array>
 #include <iostream>
 #include <cmath>
 #include <limits>
@@ -70,7 +71,8 @@ public:
   Particle_energy_3(const Neighbor_graph& graph, const Gaussian_hole_kernel_3& kernel,
                     const std::vector<Vec3>& origin, const std::vector<Mat3>& maps, int threads)
     : graph_(graph), kernel_(kernel), origin_(origin), maps_(maps), threads_(threads),
-      x_(origin.size()), pair_energy_(graph.pairs.size()), pair_gradient_(graph.pairs.size())
+      x_(origin.size()), pair_energy_(graph.pairs.size()), pair_gradient_(graph.pairs.size()),
+      pair_shared_(graph.map_slopes.empty() ? 0 : graph.pairs.size())
   {}
 
   // positions (units of l*) of the variables U
@@ -79,6 +81,7 @@ public:
 
   double operator()(const Eigen::VectorXd& U, Eigen::VectorXd& G)
   {
+    const std::vector<std::array<Mat3, 3> >& slopes = graph_.map_slopes;
     const std::ptrdiff_t np = std::ptrdiff_t(graph_.pairs.size());
     const std::ptrdiff_t n = std::ptrdiff_t(graph_.number_of_particles());
 #pragma omp parallel num_threads(threads_)
@@ -88,11 +91,26 @@ public:
 #pragma omp for schedule(static)
       for(std::ptrdiff_t p = 0; p < np; ++p) {
         const int i = graph_.pairs[p][0], j = graph_.pairs[p][1];
-        const Mat3& B = graph_.pair_map[p];
-        const Vec3 v = B * (x_[i] - x_[j]);
+        const Vec3 d = x_[i] - x_[j];
         Vec3 f;
-        pair_energy_[p] = kernel_.energy_and_force(v, f);
-        pair_gradient_[p] = -(B.transpose() * f);   // dE_ij/dX_i; dE_ij/dX_j is its opposite
+        if(slopes.empty()) {
+          const Mat3& B = graph_.pair_map[p];
+          pair_energy_[p] = kernel_.energy_and_force(B * d, f);
+          pair_gradient_[p] = -(B.transpose() * f);   // dE_ij/dX_i; dE_ij/dX_j is its opposite
+          continue;
+        }
+        // B = B_ij + sum_a S_a (m - m_ij)_a, m the midpoint: dE_ij/dX_i and dE_ij/dX_j share
+        // the half of g . S_a d, g = -f
+        const Vec3 shift = .5 * ((x_[i] - origin_[i]) + (x_[j] - origin_[j]));
+        std::array<Mat3, 3> S;
+        Mat3 B = graph_.pair_map[p];
+        for(int a = 0; a < 3; ++a) {
+          S[a] = .5 * (slopes[i][a] + slopes[j][a]);
+          B += shift[a] * S[a];
+        }
+        pair_energy_[p] = kernel_.energy_and_force(B * d, f);
+        pair_gradient_[p] = -(B.transpose() * f);
+        for(int a = 0; a < 3; ++a) pair_shared_[p][a] = -.5 * f.dot(S[a] * d);
       }
 #pragma omp for schedule(static)
       for(std::ptrdiff_t i = 0; i < n; ++i) {
@@ -101,6 +119,7 @@ public:
           const int p = graph_.pair_of[e];
           if(graph_.pairs[p][0] == i) g += pair_gradient_[p];
           else g -= pair_gradient_[p];
+          if(!slopes.empty()) g += pair_shared_[p];
         }
         G.segment<3>(3 * i) = maps_[i].transpose() * g;
       }
@@ -123,7 +142,7 @@ private:
   int threads_;
   std::vector<Vec3> x_;
   std::vector<double> pair_energy_;
-  std::vector<Vec3> pair_gradient_;
+  std::vector<Vec3> pair_gradient_, pair_shared_;
   double best_energy_ = std::numeric_limits<double>::infinity();
   Eigen::VectorXd best_U_;
 };
@@ -224,9 +243,10 @@ std::size_t snap_particles_to_boundary(Particle_set_3<Point_3>& ps, const Domain
 \ingroup PkgLatticeMesher3Optimizer
 
 One optimization round (Alg. 1): minimizes the GHK energy of the particles with L-BFGS (LBFGS++)
-over the pairs within `neighbor_radius` x l* in the isotropic space, holding each pair's map
-B((p_i + p_j)/2) fixed during the round, so that L-BFGS sees a smooth energy and its exact
-gradient. Stops when the RMS gradient (in units of 1/l*) is below `gradient_tolerance`, or after
+over the pairs within `neighbor_radius` x l* in the isotropic space. Each pair's map is B at its
+midpoint, to first order during the round (B((p_i + p_j)/2) at the start, and the slope of B
+estimated from the particles' maps), so that L-BFGS sees a smooth energy and its exact gradient,
+and its minimum is the lattice of the isotropic coordinates where the field varies. Stops when the RMS gradient (in units of 1/l*) is below `gradient_tolerance`, or after
 `max_iterations`; without an iteration limit the neighbour graph is rebuilt every 50 iterations
 so that pairs coming into range are not missed. A line-search failure restarts L-BFGS from the
 best point seen. Ends with `snap_particles_to_boundary()`.
@@ -260,10 +280,11 @@ Optimization_result optimize_particles_round(Particle_set_3<Point_3>& ps, const 
   while(remaining > 0) {
     std::vector<Vec3> x = internal::to_vectors(ps.points);
     const internal::Particle_frames frames = internal::compute_particle_frames<K>(x, field, o.threads);
-    const internal::Neighbor_graph graph =
+    internal::Neighbor_graph graph =
       internal::build_neighbor_graph<K>(x, frames, field, o.neighbor_radius * o.edge_length, o.threads);
     const std::vector<internal::Mat3> maps = internal::motion_maps(ps, domain, frames, o.threads);
     for(Vec3& p : x) p /= o.edge_length;
+    internal::estimate_map_slopes(graph, x, frames.B, o.threads);
     internal::Particle_energy_3 energy(graph, kernel, x, maps, o.threads);
     Eigen::VectorXd X = Eigen::VectorXd::Zero(3 * n);   // the variables U, from the start
 

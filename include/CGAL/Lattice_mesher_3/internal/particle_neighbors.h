@@ -164,6 +164,10 @@ struct Neighbor_graph
   std::vector<int> offsets, neighbor, pair_of;
   std::vector<std::array<int, 2> > pairs;
   std::vector<Mat3> pair_map;
+  // dB/dx_a (a = 0, 1, 2) at each particle, in the units of the positions: a pair's map is then
+  // B_ij + sum_a S_a (m - m_ij)_a, S the mean of its particles' slopes and m its moving midpoint
+  // (`estimate_map_slopes()`); empty: B frozen.
+  std::vector<std::array<Mat3, 3> > map_slopes;
 
   std::size_t number_of_particles() const { return offsets.empty() ? 0 : offsets.size() - 1; }
 };
@@ -232,6 +236,46 @@ Neighbor_graph build_neighbor_graph(const std::vector<Vec3>& x, const Particle_f
     g.neighbor[fill[j]] = i; g.pair_of[fill[j]++] = int(p);
   }
   return g;
+}
+
+// The slopes of B at the particles (Neighbor_graph::map_slopes), for positions x and maps B
+// at them. A frozen B_ij makes the round's minimum a strained lattice where the field varies:
+// the force on a particle is the sum of B_ij^T f_ij, which weighs its pairs on the side where B is
+// larger more (fig8 FCC: lattice spacing along x off by 7.6 % RMS, edges 1 degree off the
+// lattice). B moving with the midpoint makes a pair's isotropic vector that of the isotropic
+// coordinates up to second order in its length, so that the minimum is the lattice there.
+// Least squares of B_j - B_i = sum_a S_a (x_j - x_i)_a over each particle's neighbours: no field
+// evaluation, and a discrete field's steps are smoothed over the neighbour distance. Neighbours
+// whose B differs by more than half (a cross field's frame permutation, a discontinuity) are left
+// out, and so is a fit whose neighbours span no volume. Left empty where B is the same everywhere.
+inline void estimate_map_slopes(Neighbor_graph& g, const std::vector<Vec3>& x, const std::vector<Mat3>& B, int threads)
+{
+  const std::ptrdiff_t n = std::ptrdiff_t(g.number_of_particles());
+  bool varies = false;
+  for(const std::array<int, 2>& p : g.pairs) varies = varies || B[p[0]] != B[p[1]];
+  g.map_slopes.clear();
+  if(!varies) return;
+  g.map_slopes.resize(n);
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for(std::ptrdiff_t i = 0; i < n; ++i) {
+    Mat3 a = Mat3::Zero();
+    Eigen::Matrix<double, 3, 9> r = Eigen::Matrix<double, 3, 9>::Zero();
+    const double jump = .5 * B[i].norm();
+    for(int e = g.offsets[i]; e < g.offsets[i + 1]; ++e) {
+      const int j = g.neighbor[e];
+      const Mat3 db = B[j] - B[i];
+      if(db.norm() > jump) continue;
+      const Vec3 d = x[j] - x[i];
+      a += d * d.transpose();
+      r += d * Eigen::Map<const Eigen::Matrix<double, 1, 9> >(db.data());
+    }
+    std::array<Mat3, 3>& s = g.map_slopes[i];
+    for(Mat3& m : s) m.setZero();
+    const double scale = a.trace() / 3.;
+    if(!(scale > 0.) || !(a.determinant() > 1e-6 * scale * scale * scale)) continue;
+    const Eigen::Matrix<double, 3, 9> slope = a.ldlt().solve(r);
+    for(int k = 0; k < 3; ++k) s[k] = Eigen::Map<const Mat3>(slope.row(k).eval().data());
+  }
 }
 
 // Uniform hash grid for a growing point set (the insertion's accepted candidates), where a
