@@ -92,25 +92,21 @@ public:
       for(std::ptrdiff_t p = 0; p < np; ++p) {
         const int i = graph_.pairs[p][0], j = graph_.pairs[p][1];
         const Vec3 d = x_[i] - x_[j];
-        Vec3 f;
-        if(slopes.empty()) {
-          const Mat3& B = graph_.pair_map[p];
-          pair_energy_[p] = kernel_.energy_and_force(B * d, f);
-          pair_gradient_[p] = -(B.transpose() * f);   // dE_ij/dX_i; dE_ij/dX_j is its opposite
-          continue;
-        }
-        // B = B_ij + sum_a S_a (m - m_ij)_a, m the midpoint: dE_ij/dX_i and dE_ij/dX_j share
-        // the half of g . S_a d, g = -f
-        const Vec3 shift = .5 * ((x_[i] - origin_[i]) + (x_[j] - origin_[j]));
-        std::array<Mat3, 3> S;
+        // B = B_ij + sum_a S_a (m - m_ij)_a, m the midpoint (just B_ij without slopes)
         Mat3 B = graph_.pair_map[p];
-        for(int a = 0; a < 3; ++a) {
-          S[a] = .5 * (slopes[i][a] + slopes[j][a]);
-          B += shift[a] * S[a];
+        std::array<Mat3, 3> S;
+        if(!slopes.empty()) {
+          const Vec3 shift = .5 * ((x_[i] - origin_[i]) + (x_[j] - origin_[j]));
+          for(int a = 0; a < 3; ++a) {
+            S[a] = .5 * (slopes[i][a] + slopes[j][a]);
+            B += shift[a] * S[a];
+          }
         }
+        Vec3 f;
         pair_energy_[p] = kernel_.energy_and_force(B * d, f);
-        pair_gradient_[p] = -(B.transpose() * f);
-        for(int a = 0; a < 3; ++a) pair_shared_[p][a] = -.5 * f.dot(S[a] * d);
+        pair_gradient_[p] = -(B.transpose() * f);   // dE_ij/dX_i, and minus dE_ij/dX_j ...
+        // ... but for the share of B's motion they have in common: half of g . S_a d, g = -f
+        if(!slopes.empty()) for(int a = 0; a < 3; ++a) pair_shared_[p][a] = -.5 * f.dot(S[a] * d);
       }
 #pragma omp for schedule(static)
       for(std::ptrdiff_t i = 0; i < n; ++i) {
