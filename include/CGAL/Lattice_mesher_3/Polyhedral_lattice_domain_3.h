@@ -151,7 +151,10 @@ public:
   double feature_angle() const { return m_data->feature_angle; }
 
 private:
-  typedef CGAL::AABB_face_graph_triangle_primitive<Surface_mesh>            Triangle_primitive;
+  // the triangles are stored in the primitives (CacheDatum): rebuilding each from the mesh's
+  // halfedges in every closest-point traversal cost more than the traversal's own tests
+  typedef CGAL::AABB_face_graph_triangle_primitive<Surface_mesh, CGAL::Default, CGAL::Tag_true, CGAL::Tag_true>
+                                                                             Triangle_primitive;
   typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Triangle_primitive> >         Triangle_tree;
   typedef CGAL::Side_of_triangle_mesh<Surface_mesh, K, CGAL::Default, Triangle_tree>
                                                                              Side_of_surface;

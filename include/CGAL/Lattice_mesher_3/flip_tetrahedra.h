@@ -100,7 +100,7 @@ public:
   enum Criterion { SHAPE, ANGLE };
 
   Flip_mesh(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field, const Flip_options& o)
-    : mesh_(mesh), field_(field), o_(o)
+    : mesh_(mesh), field_(field), o_(o), changed_(mesh.points.size(), 0)
   {
     // An inverted tetrahedron (only given ones: flips create none, so measure() need not look)
     // measures -1 degree and a huge shape energy: both criteria take any flip that removes it.
@@ -149,9 +149,24 @@ public:
       if(c == SHAPE && shape_after >= shape_before - 1e-9) return false;
     }
     for(int t : old) remove(t);
-    for(std::size_t k = 0; k < created.size(); ++k) add(created[k], m[k]);
+    ++clock_;
+    for(std::size_t k = 0; k < created.size(); ++k) {
+      add(created[k], m[k]);
+      for(int v : created[k]) changed_[v] = clock_;
+    }
     return true;
   }
+
+  // Whether a flip around t can succeed depends only on the tetrahedra sharing a vertex with t
+  // (those around its edges and faces): t need not be tried again until one of them changes.
+  bool worth_trying(int t) const
+  {
+    const std::array<int, 4>& v = tets_[t];
+    return tried_[t] < (std::max)({ changed_[v[0]], changed_[v[1]], changed_[v[2]], changed_[v[3]] });
+  }
+  void mark_tried(int t) { tried_[t] = clock_; }
+  // a new criterion: every tetrahedron is worth trying again
+  void forget_tries() { std::fill(tried_.begin(), tried_.end(), -1); }
 
   // 2-3 flip of the face (a, b, c) shared by two tetrahedra
   bool flip23(const std::array<int, 3>& f, Criterion c)
@@ -374,6 +389,7 @@ private:
     tets_.push_back(t);
     measure_.push_back(m);
     alive_.push_back(1);
+    tried_.push_back(-1);
     for(int i = 0; i < 4; ++i) {
       auto& slot = faces_.emplace(sorted(std::array<int, 3>{ t[(i + 1) % 4], t[(i + 2) % 4], t[(i + 3) % 4] }),
                                   std::array<int, 2>{ -1, -1 }).first->second;
@@ -405,6 +421,10 @@ private:
   std::vector<std::array<int, 4> > tets_;
   std::vector<Flip_measure> measure_;
   std::vector<char> alive_;
+  // flips done so far; per vertex the flip that last changed its tetrahedra; per tetrahedron the
+  // clock of its last unsuccessful try (-1: none)
+  long clock_ = 0;
+  std::vector<long> changed_, tried_;
   std::unordered_map<std::array<int, 3>, std::array<int, 2>, Face_key_hash> faces_;
   std::unordered_map<std::array<int, 2>, std::vector<int>, Face_key_hash> edges_;
   bool boundary_changed_ = false;
@@ -442,7 +462,7 @@ Flip_result flip_tetrahedra(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField&
     for(int pass = 0; pass < o.max_passes; ++pass) {
       const std::size_t before = result.total();
       for(int t : fm.candidates(c)) {
-        if(!fm.alive(t)) continue;
+        if(!fm.alive(t) || !fm.worth_trying(t)) continue;
         const std::array<int, 4> v = fm.tet(t);
         bool done = false;
         for(int i = 0; i < 4 && !done; ++i)
@@ -457,11 +477,13 @@ Flip_result flip_tetrahedra(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField&
         for(int i = 0; i < 4 && !done && fm.inverted(t); ++i)
           for(int j = i + 1; j < 4 && !done; ++j)
             if(fm.flip_boundary_edge(v[i], v[j], o.max_ring_size) > 0) { ++result.boundary_flips; done = true; }
+        if(!done) fm.mark_tried(t);
       }
       if(result.total() == before) break;
     }
   };
   if(fm.has_shape()) run(Flip_mesh::SHAPE);
+  fm.forget_tries();
   run(Flip_mesh::ANGLE);
   fm.commit();
   return result;
