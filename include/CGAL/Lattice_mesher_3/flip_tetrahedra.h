@@ -17,6 +17,8 @@
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/enum.h>
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -102,6 +104,9 @@ public:
   Flip_mesh(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field, const Flip_options& o)
     : mesh_(mesh), field_(field), o_(o), changed_(mesh.points.size(), 0)
   {
+    // a closed tetrahedral mesh has about 2 faces and 1.2 edges per tetrahedron
+    faces_.reserve(2 * mesh.tets.size() + 64);
+    edges_.reserve(mesh.tets.size() + mesh.tets.size() / 2 + 64);
     // An inverted tetrahedron (only given ones: flips create none, so measure() need not look)
     // measures -1 degree and a huge shape energy: both criteria take any flip that removes it.
     for(const std::array<int, 4>& t : mesh.tets)
@@ -189,7 +194,7 @@ public:
   {
     auto it = edges_.find(sorted(std::array<int, 2>{ a, b }));
     if(it == edges_.end()) return 0;
-    const std::vector<int> around = it->second;
+    const std::vector<int> around(it->second.begin(), it->second.end());
     const int n = int(around.size());
     if(n < 3 || n > max_ring) return 0;
     std::vector<int> ring;
@@ -211,7 +216,7 @@ public:
   {
     auto it = edges_.find(sorted(std::array<int, 2>{ a, c }));
     if(it == edges_.end()) return 0;
-    const std::vector<int> around = it->second;
+    const std::vector<int> around(it->second.begin(), it->second.end());
     const int n = int(around.size()) + 1;
     if(n < 3 || n > max_ring) return 0;
     std::vector<int> ring;
@@ -426,7 +431,8 @@ private:
   long clock_ = 0;
   std::vector<long> changed_, tried_;
   std::unordered_map<std::array<int, 3>, std::array<int, 2>, Face_key_hash> faces_;
-  std::unordered_map<std::array<int, 2>, std::vector<int>, Face_key_hash> edges_;
+  // the tetrahedra around an edge: about 5 in a lattice mesh, kept inline
+  std::unordered_map<std::array<int, 2>, boost::container::small_vector<int, 8>, Face_key_hash> edges_;
   bool boundary_changed_ = false;
 };
 

@@ -84,27 +84,49 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     for(int i = 0; i < 4; ++i) p[i] = maps[t] * internal::to_eigen(mesh.tets[t][i] == moved ? at : mesh.points[mesh.tets[t][i]]);
     return internal::smallest_dihedral_angle_and_radius_ratio(p[0], p[1], p[2], p[3]);
   };
+  // The star of v, its other vertices mapped once per search: only v moves during it.
+  struct Star_tet { std::size_t t; int k; std::array<Point_3, 4> p; std::array<Eigen::Vector3d, 4> mapped; double penalty; };
+  auto gather_star = [&](int v, std::vector<Star_tet>& out) {
+    out.clear();
+    for(int t : star[v]) {
+      Star_tet s;
+      s.t = std::size_t(t);
+      for(int i = 0; i < 4; ++i) {
+        const int w = mesh.tets[t][i];
+        if(w == v) s.k = i;
+        s.p[i] = mesh.points[w];
+        s.mapped[i] = maps[t] * internal::to_eigen(mesh.points[w]);
+      }
+      out.push_back(s);
+    }
+  };
   // The star of v with v at `at`, scored by the sum over its tetrahedra of (target - angle)^2
   // for smallest angles below the target: a worst angle raised by a few degrees at the price of
   // good tetrahedra falling towards it costs more than it gains (max-min smoothing made more
   // tetrahedra below 40 degrees than it fixed). `worst` is the star's smallest angle.
+  // `bound`: a candidate whose penalty exceeds it cannot win, and is abandoned early.
   struct Score { double penalty, worst; };
-  // `bound`: a candidate whose penalty exceeds it cannot win, and is abandoned early
-  auto star_quality = [&](int v, const Point_3& at, double bound) {
+  auto star_quality = [&](std::vector<Star_tet>& st, const Point_3& at, double bound) {
     Score s{ 0., 180. };
-    for(int t : star[v]) {
-      const std::array<int, 4>& tv = mesh.tets[t];
-      std::array<Point_3, 4> p;
-      for(int i = 0; i < 4; ++i) p[i] = tv[i] == v ? at : mesh.points[tv[i]];
-      if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) return Score{ HUGE_VAL, -1. };
-      const std::pair<double, double> q = tet_quality(std::size_t(t), v, at);   // angle, radius ratio
+    for(Star_tet& e : st) {
+      e.p[e.k] = at;
+      if(CGAL::orientation(e.p[0], e.p[1], e.p[2], e.p[3]) != CGAL::POSITIVE) return Score{ HUGE_VAL, -1. };
+      e.mapped[e.k] = maps[e.t] * internal::to_eigen(at);
+      const std::pair<double, double> q =   // angle, radius ratio
+          internal::smallest_dihedral_angle_and_radius_ratio(e.mapped[0], e.mapped[1], e.mapped[2], e.mapped[3]);
       s.worst = (std::min)(s.worst, q.first);
-      s.penalty += CGAL::square((std::max)(0., o.target_angle - q.first))
-                 + o.worst_weight * CGAL::square((std::max)(0., o.worst_angle - q.first))
-                 + CGAL::square(o.radius_ratio_weight * (std::max)(0., o.target_radius_ratio - q.second));
+      e.penalty = CGAL::square((std::max)(0., o.target_angle - q.first))
+                + o.worst_weight * CGAL::square((std::max)(0., o.worst_angle - q.first))
+                + CGAL::square(o.radius_ratio_weight * (std::max)(0., o.target_radius_ratio - q.second));
+      s.penalty += e.penalty;
       if(s.penalty > bound) return Score{ HUGE_VAL, -1. };
     }
     return s;
+  };
+  // After a full evaluation, the worst tetrahedra first: a candidate that does not win
+  // usually loses on them, and is abandoned after a few.
+  auto worst_first = [](std::vector<Star_tet>& st) {
+    std::stable_sort(st.begin(), st.end(), [](const Star_tet& a, const Star_tet& b) { return a.penalty > b.penalty; });
   };
   // a move must lower the penalty and may not lower the star's worst angle below the floor
   auto better = [&](const Score& c, const Score& best) {
@@ -166,7 +188,10 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     }
     // each direction scaled to unit isotropic length (exactly as it is when B = I)
     for(Eigen::Vector3d& d : directions) d *= d.norm() / (b * d).norm();
-    Score best = star_quality(v, mesh.points[v], HUGE_VAL);
+    std::vector<Star_tet> st;
+    gather_star(v, st);
+    Score best = star_quality(st, mesh.points[v], HUGE_VAL);
+    worst_first(st);
     std::size_t accepted = 0;
     for(double step : { .3, .1, .03 })
       for(int repeat = 0, improved = 1; improved && repeat < 4; ++repeat) {
@@ -174,8 +199,8 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
         for(const Eigen::Vector3d& d : directions) {
           const Eigen::Vector3d y = internal::to_eigen(mesh.points[v]) + step * mean_edge * d;
           const Point_3 candidate = constrain(v, Point_3(y[0], y[1], y[2]));
-          const Score q = star_quality(v, candidate, best.penalty);
-          if(better(q, best)) { best = q; mesh.points[v] = candidate; improved = 1; ++accepted; }
+          const Score q = star_quality(st, candidate, best.penalty);
+          if(better(q, best)) { best = q; mesh.points[v] = candidate; improved = 1; ++accepted; worst_first(st); }
         }
       }
     return accepted;
