@@ -10,7 +10,6 @@
 #ifndef CGAL_LATTICE_MESHER_3_INTERNAL_ISOTROPIC_EMBEDDING_H
 #define CGAL_LATTICE_MESHER_3_INTERNAL_ISOTROPIC_EMBEDDING_H
 
-#include <CGAL/Lattice_mesher_3/check_mesh.h>
 #include <CGAL/Lattice_mesher_3/frame_fields.h>
 #include <CGAL/Lattice_mesher_3/internal/particle_neighbors.h>
 
@@ -86,29 +85,9 @@ std::vector<Vec3> isotropic_embedding(const std::vector<Vec3>& x, const FrameFie
   // whose differential is S up to a rotation varying from place to place is much closer: as
   // rigid as possible (Sorkine & Alexa 2007), alternating the best rotation R_i of each
   // particle's star with the least squares of |y_i - y_j - (R_i + R_j)/2 d_ij|^2.
-  //
-  // The pull fixes only each connected component's translation: summed over a component, the
-  // normal equations say that its mean is that of S_i x_i. CG solves for the rest, with zero
-  // mean per component, where L + pull I is as well conditioned as L on its range; on the whole
-  // space the translations' eigenvalue, the pull, cost CG thousands of iterations (fig8 BCC,
-  // 2,600 particles: 16 s).
-  std::vector<std::size_t> parent(n);
-  for(std::size_t i = 0; i < n; ++i) parent[i] = i;
-  for(const auto& e : g.pairs) parent[find_root(parent, std::size_t(e[0]))] = find_root(parent, std::size_t(e[1]));
-  std::vector<std::size_t> component(n);
-  std::vector<double> size(n, 0.);
-  for(std::size_t i = 0; i < n; ++i) { component[i] = find_root(parent, i); size[component[i]] += 1.; }
-  // removes each component's mean from the rows of m, and returns the means
-  auto remove_means = [&](Eigen::MatrixXd& m) {
-    Eigen::MatrixXd mean = Eigen::MatrixXd::Zero(Eigen::Index(n), 3);
-    for(std::size_t i = 0; i < n; ++i) mean.row(Eigen::Index(component[i])) += m.row(Eigen::Index(i)) / size[component[i]];
-    for(std::size_t i = 0; i < n; ++i) m.row(Eigen::Index(i)) -= mean.row(Eigen::Index(component[i]));
-    return mean;
-  };
   std::vector<Mat3> R(n, Mat3::Identity());
   Eigen::MatrixXd Y(n, 3), rhs(n, 3);
   for(std::size_t i = 0; i < n; ++i) Y.row(i) = (s[i] * x[i]).transpose();
-  const Eigen::MatrixXd mean = remove_means(Y);
   const int iterations = 8;
   for(int it = 0; it <= iterations; ++it) {
     for(std::size_t i = 0; i < n; ++i) rhs.row(i) = pull * (s[i] * x[i]).transpose();
@@ -118,9 +97,7 @@ std::vector<Vec3> isotropic_embedding(const std::vector<Vec3>& x, const FrameFie
       rhs.row(i) += r.transpose();
       rhs.row(j) -= r.transpose();
     }
-    remove_means(rhs);
     Y = cg.solveWithGuess(rhs, Y);
-    remove_means(Y);   // the rounding's drift
     if(it == iterations) break;
 #pragma omp parallel for num_threads(threads) schedule(static)
     for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i) {
@@ -135,7 +112,7 @@ std::vector<Vec3> isotropic_embedding(const std::vector<Vec3>& x, const FrameFie
       R[i] = u * svd.matrixV().transpose();
     }
   }
-  for(std::size_t i = 0; i < n; ++i) y[i] = (Y.row(Eigen::Index(i)) + mean.row(Eigen::Index(component[i]))).transpose();
+  for(std::size_t i = 0; i < n; ++i) y[i] = Y.row(i).transpose();
   return y;
 }
 
