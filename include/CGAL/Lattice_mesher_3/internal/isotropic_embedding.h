@@ -18,6 +18,7 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <vector>
 
 namespace CGAL {
@@ -73,8 +74,16 @@ std::vector<Vec3> isotropic_embedding(const std::vector<Vec3>& x, const FrameFie
     t.emplace_back(e[0], e[0], 1.); t.emplace_back(e[1], e[1], 1.);
     t.emplace_back(e[0], e[1], -1.); t.emplace_back(e[1], e[0], -1.);
   }
-  // Column-major: Eigen runs row-major sparse products on all OpenMP threads, whatever the
-  // thread count asked for (and spin-waits for a busy core).
+  // Eigen runs the CG's sparse products (row-major: it transposes a column-major matrix given
+  // as Lower | Upper) on all OpenMP threads unless told otherwise, and its threads spin-wait
+  // for busy cores (fig8 BCC on a machine loaded by a build: 17 s instead of 0.4 s). It gets
+  // the caller's thread count for the solves; the products are the same for any count (row by row).
+  struct Eigen_threads
+  {
+    int saved = Eigen::nbThreads();
+    explicit Eigen_threads(int t) { Eigen::setNbThreads((std::max)(t, 1)); }
+    ~Eigen_threads() { Eigen::setNbThreads(saved); }
+  } eigen_threads(threads);
   Eigen::SparseMatrix<double> L{Eigen::Index(n), Eigen::Index(n)};
   L.setFromTriplets(t.begin(), t.end());
   Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg(L);
