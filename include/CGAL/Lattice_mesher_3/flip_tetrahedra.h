@@ -100,6 +100,8 @@ class Flip_mesh
 {
 public:
   enum Criterion { SHAPE, ANGLE };
+  // tetrahedra around an edge (about 5 in a lattice mesh) or replaced by a flip, kept inline
+  typedef boost::container::small_vector<int, 8> Tet_list;
 
   Flip_mesh(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field, const Flip_options& o)
     : mesh_(mesh), field_(field), o_(o), changed_(mesh.points.size(), 0)
@@ -139,7 +141,7 @@ public:
   }
 
   // replaces the tetrahedra `old` by `created` if the criterion says it is better
-  bool try_replace(const std::vector<int>& old, std::vector<std::array<int, 4> >& created, Criterion c)
+  bool try_replace(const Tet_list& old, std::vector<std::array<int, 4> >& created, Criterion c)
   {
     double before = 180., after = 180., shape_before = 0., shape_after = 0.;
     for(int t : old) { before = (std::min)(before, measure_[t].angle); shape_before += measure_[t].shape; }
@@ -194,7 +196,7 @@ public:
   {
     auto it = edges_.find(sorted(std::array<int, 2>{ a, b }));
     if(it == edges_.end()) return 0;
-    const std::vector<int> around(it->second.begin(), it->second.end());
+    const Tet_list around = it->second;   // a copy: the replacement edits the map
     const int n = int(around.size());
     if(n < 3 || n > max_ring) return 0;
     std::vector<int> ring;
@@ -216,7 +218,7 @@ public:
   {
     auto it = edges_.find(sorted(std::array<int, 2>{ a, c }));
     if(it == edges_.end()) return 0;
-    const std::vector<int> around(it->second.begin(), it->second.end());
+    const Tet_list around = it->second;   // a copy: the replacement edits the map
     const int n = int(around.size()) + 1;
     if(n < 3 || n > max_ring) return 0;
     std::vector<int> ring;
@@ -333,7 +335,7 @@ private:
 
   // the vertices around the boundary edge ab from the apex of one boundary face to that of the
   // other; false if ab is not a boundary edge of two boundary faces
-  bool order_open_ring(int a, int b, const std::vector<int>& around, std::vector<int>& ring) const
+  bool order_open_ring(int a, int b, const Tet_list& around, std::vector<int>& ring) const
   {
     std::unordered_map<int, std::vector<int> > link;
     for(int t : around) {
@@ -362,7 +364,7 @@ private:
   }
 
   // the vertices around edge ab in cyclic order; false if the tetrahedra do not close a ring
-  bool order_ring(int a, int b, const std::vector<int>& around, std::vector<int>& ring) const
+  bool order_ring(int a, int b, const Tet_list& around, std::vector<int>& ring) const
   {
     std::vector<std::array<int, 2> > links;
     for(int t : around) {
@@ -431,8 +433,7 @@ private:
   long clock_ = 0;
   std::vector<long> changed_, tried_;
   std::unordered_map<std::array<int, 3>, std::array<int, 2>, Face_key_hash> faces_;
-  // the tetrahedra around an edge: about 5 in a lattice mesh, kept inline
-  std::unordered_map<std::array<int, 2>, boost::container::small_vector<int, 8>, Face_key_hash> edges_;
+  std::unordered_map<std::array<int, 2>, Tet_list, Face_key_hash> edges_;
   bool boundary_changed_ = false;
 };
 
