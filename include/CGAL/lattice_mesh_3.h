@@ -59,7 +59,7 @@ them (`tetrahedralize_particles()`).
     \cgalParamDefault{`Lattice_type::BCC`}
   \cgalParamNEnd
   \cgalParamNBegin{random_seed}
-    \cgalParamDescription{seed of the random start: the same seed and number of threads give the same mesh}
+    \cgalParamDescription{seed of the random points of the start: the same seed and number of threads give the same mesh}
     \cgalParamType{unsigned int}
     \cgalParamDefault{0}
   \cgalParamNEnd

@@ -120,4 +120,32 @@ TEST(Smooth_vertices, LowersTheShortfallRaisesTheWorstAngleAndKeepsVerticesOnThe
   EXPECT_EQ(single.points, mesh.points);
 }
 
+// A BCC lattice filling the unit cube (l* = 1/4): besides the lattice's own tetrahedra (60
+// degrees), the walls leave half pyramids of 45 degrees, the best there are. The smoothing moves
+// them only when it is not told the lattice (their apex leaves its lattice position).
+TEST(Smooth_vertices, LeavesLatticeTetrahedraAlone)
+{
+  const LM::Constant_frame_field_3<Traits> field;
+  const int n = 4;
+  LM::Particle_set_3<Point_3> ps;
+  for(int i = 0; i <= n; ++i) for(int j = 0; j <= n; ++j) for(int k = 0; k <= n; ++k) {
+    const int on = (i == 0 || i == n) + (j == 0 || j == n) + (k == 0 || k == n);
+    ps.push_back(Point_3(double(i) / n, double(j) / n, double(k) / n),
+                 on == 3 ? LM::Particle_kind::FIXED : on == 2 ? LM::Particle_kind::SHARP_EDGE
+                 : on == 1 ? LM::Particle_kind::BOUNDARY : LM::Particle_kind::FREE);
+    if(i < n && j < n && k < n) ps.push_back(Point_3((i + .5) / n, (j + .5) / n, (k + .5) / n), LM::Particle_kind::FREE);
+  }
+  const LM::Tetrahedral_mesh_3<Point_3> lattice = LM::tetrahedralize_particles(ps, unit_cube(), field);
+  ASSERT_TRUE(LM::check_tetrahedral_mesh(lattice).valid());
+  EXPECT_NEAR(worst_angle(lattice, field), 45., 1e-6);
+  LM::Smoothing_options o;
+  o.lattice = LM::bcc_lattice();
+  o.edge_length = 1. / n;
+  LM::Tetrahedral_mesh_3<Point_3> mesh = lattice;
+  EXPECT_EQ(LM::smooth_vertices(mesh, unit_cube(), field, o), 0u);
+  EXPECT_EQ(mesh.points, lattice.points);
+  o.edge_length = 0.;   // no lattice
+  EXPECT_GT(LM::smooth_vertices(mesh, unit_cube(), field, o), 0u);
+}
+
 } // namespace

@@ -36,9 +36,6 @@ isotropic space; the stages scale them by the target edge length l*.
   Particle2013 has none: it keeps BCC's density for the vertex count and BCC's one-ring for
   the alignment error, and the mesher neither inserts nor deletes its particles.
 - `closest_distance` is l_closest / l*, `density` the number of lattice points per unit cube.
-- `tetrahedron_angle` is the smallest dihedral angle of the tetrahedra of the lattice's
-  Delaunay tetrahedralization (BCC 60, FCC 54.74: its octahedra split in four), so that the
-  smoothing can leave them alone.
 
 A new lattice (A15, ...) is one more hole set: no stage depends on which lattice it runs.
 */
@@ -52,7 +49,6 @@ struct Lattice_3
   double closest_distance = 1.;   // l_closest / l*
   double density = 1.;            // lattice points per unit cube
   double sigma_ratio = 0.3;       // sigma = sigma_ratio * l_closest
-  double tetrahedron_angle = 60.; // smallest dihedral angle of the lattice's tetrahedra, degrees
   // Number of points of a lattice patch that fills a body of volume V, boundary area A and
   // feature length L at edge length l: density V/l^3 + area_factor A/l^2 + length_factor L/l
   // (exact for a lattice-aligned cube; used to pick l* from a vertex count).
@@ -116,7 +112,6 @@ inline Lattice_3 fcc_lattice()
   internal::add_axis_offsets(l.one_ring);
   l.holes = l.one_ring;
   l.closest_distance = std::sqrt(2.) / 2.;
-  l.tetrahedron_angle = 54.735610317245346;   // atan(sqrt 2): half the octahedron dihedral angle
   l.density = 4.;
   l.area_factor = 1.;
   l.length_factor = .25;
