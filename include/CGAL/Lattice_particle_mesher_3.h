@@ -120,8 +120,9 @@ public:
     }
   }
 
-  /// Runs the whole particle optimization: the start (`initialize_particles()`) at the coarsest level, rounds of
-  /// L-BFGS with deletion and insertion, refinement to the next level, and a last tight round.
+  /// Runs the whole particle optimization: the start (`initialize_particles()`) at the coarsest
+  /// level, rounds of L-BFGS with deletion and insertion, refinement to the next level, and a
+  /// last tight round.
   /// The hole-less kernel (Particle2013) has no lattice to insert along: its particles start at
   /// the final count (`scatter_particles()`) and only move, in 30 rounds of 5 iterations (or
   /// `max_rounds`), free particles kept inside and boundary ones on the boundary after each.

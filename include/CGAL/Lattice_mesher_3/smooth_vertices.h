@@ -73,8 +73,8 @@ of the tangent plane (the surface normal comes from `project_on_surface()`), for
 vertices the 2 of the curve's tangent. The worst tetrahedra are those below `o.select_angle`
 that are not lattice tetrahedra (`Smoothing_options::lattice`). Boundary vertices stay on the
 surface and sharp-edge vertices on the feature curves (each candidate is projected back), fixed
-vertices (corners) do not move. After the first of `max_passes` passes, only vertices sharing a tetrahedron with a vertex
-moved in the previous pass are searched again. A move is kept only if no tetrahedron of the star
+vertices (corners) do not move. After the first of `max_passes` passes, only vertices sharing a
+tetrahedron with a vertex moved in the previous pass are searched again. A move is kept only if no tetrahedron of the star
 is inverted (exact orientation tests), the shortfall falls and the star's smallest angle does not
 fall below the floor, so the boundary stays on the surface and the mesh stays valid. Needs
 `mesh.vertex_kinds`. Returns the number of moves.
