@@ -92,9 +92,7 @@ LM::Particle_set_3<Point_3> fig8_lattice(double l, std::vector<Vec3>& iso, doubl
     if(on == 3)
       for(std::size_t c = 0; c < fig8_cube().corners().size(); ++c)
         if(CGAL::squared_distance(fig8_cube().corners()[c], p) < 1e-20) corner = int(c);
-    ps.push_back(on == 3 ? fig8_cube().corners()[corner] : p,
-                 on == 3 ? LM::Particle_kind::FIXED : on == 2 ? LM::Particle_kind::SHARP_EDGE
-                 : on == 1 ? LM::Particle_kind::BOUNDARY : LM::Particle_kind::FREE, corner);
+    ps.push_back(on == 3 ? fig8_cube().corners()[corner] : p, test_meshes::box_particle_kind(on), corner);
     iso.emplace_back(s, y, z);
   };
   // the end coordinates exactly on the cube's faces

@@ -130,9 +130,7 @@ TEST(Smooth_vertices, LeavesLatticeTetrahedraAlone)
   LM::Particle_set_3<Point_3> ps;
   for(int i = 0; i <= n; ++i) for(int j = 0; j <= n; ++j) for(int k = 0; k <= n; ++k) {
     const int on = (i == 0 || i == n) + (j == 0 || j == n) + (k == 0 || k == n);
-    ps.push_back(Point_3(double(i) / n, double(j) / n, double(k) / n),
-                 on == 3 ? LM::Particle_kind::FIXED : on == 2 ? LM::Particle_kind::SHARP_EDGE
-                 : on == 1 ? LM::Particle_kind::BOUNDARY : LM::Particle_kind::FREE);
+    ps.push_back(Point_3(double(i) / n, double(j) / n, double(k) / n), test_meshes::box_particle_kind(on));
     if(i < n && j < n && k < n) ps.push_back(Point_3((i + .5) / n, (j + .5) / n, (k + .5) / n), LM::Particle_kind::FREE);
   }
   const LM::Tetrahedral_mesh_3<Point_3> lattice = LM::tetrahedralize_particles(ps, unit_cube(), field);

@@ -29,6 +29,14 @@ inline const Domain& unit_cube()
   return d;
 }
 
+// The kind of a particle on `on` of a box's three pairs of faces: 3 a corner, 2 an edge, 1 a face.
+inline CGAL::Lattice_mesher_3::Particle_kind box_particle_kind(int on)
+{
+  namespace LM = CGAL::Lattice_mesher_3;
+  return on == 3 ? LM::Particle_kind::FIXED : on == 2 ? LM::Particle_kind::SHARP_EDGE
+       : on == 1 ? LM::Particle_kind::BOUNDARY : LM::Particle_kind::FREE;
+}
+
 // A jittered (n+1)^3 grid on the unit cube: corners fixed, edge and face points on the surface,
 // the rest free. Its Delaunay mesh has many poor tetrahedra for the improvement stages to work on.
 inline CGAL::Lattice_mesher_3::Tetrahedral_mesh_3<K::Point_3> jittered_mesh(unsigned int seed, int n = 6)
@@ -41,8 +49,7 @@ inline CGAL::Lattice_mesher_3::Tetrahedral_mesh_3<K::Point_3> jittered_mesh(unsi
     const int on = (i == 0 || i == n) + (j == 0 || j == n) + (k == 0 || k == n);
     auto c = [&](int a, bool fixed) { return fixed ? double(a) / n : (a + jitter(g)) / n; };
     const K::Point_3 p(c(i, i == 0 || i == n), c(j, j == 0 || j == n), c(k, k == 0 || k == n));
-    ps.push_back(p, on == 3 ? LM::Particle_kind::FIXED : on == 2 ? LM::Particle_kind::SHARP_EDGE
-                   : on == 1 ? LM::Particle_kind::BOUNDARY : LM::Particle_kind::FREE);
+    ps.push_back(p, box_particle_kind(on));
   }
   return LM::tetrahedralize_particles(ps, unit_cube(), LM::Constant_frame_field_3<CGAL::Lattice_mesher_traits_3<K> >());
 }

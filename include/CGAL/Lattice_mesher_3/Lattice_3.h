@@ -12,6 +12,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -68,6 +69,29 @@ struct Lattice_3
 };
 
 namespace internal {
+/// min over `set` of |v - u|^2 (HUGE_VAL for an empty set)
+inline double squared_distance_to_closest(const Eigen::Vector3d& v, const std::vector<Eigen::Vector3d>& set)
+{
+  double best = HUGE_VAL;
+  for(const Eigen::Vector3d& u : set) best = (std::min)(best, (v - u).squaredNorm());
+  return best;
+}
+
+/// The lattice's short vectors: its one-ring offsets and the nonzero sums of two (BCC: 64,
+/// up to 2 l*), the edges of its own tetrahedra and of those a wall on a lattice plane leaves.
+inline std::vector<Eigen::Vector3d> lattice_vectors(const std::vector<Eigen::Vector3d>& one_ring)
+{
+  std::vector<Eigen::Vector3d> v(one_ring);
+  for(const Eigen::Vector3d& a : one_ring)
+    for(const Eigen::Vector3d& b : one_ring) if((a + b).norm() > .5) v.push_back(a + b);
+  auto lexicographic = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  };
+  std::sort(v.begin(), v.end(), lexicographic);
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
+
 inline void add_axis_offsets(std::vector<Eigen::Vector3d>& ring)
 {
   for(int a = 0; a < 3; ++a)

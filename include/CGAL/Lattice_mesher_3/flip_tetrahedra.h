@@ -68,12 +68,8 @@ inline double lattice_shape_energy(const std::array<Eigen::Vector3d, 4>& p, cons
 {
   double e = 0.;
   for(int i = 0; i < 4; ++i)
-    for(int j = i + 1; j < 4; ++j) {
-      const Eigen::Vector3d v = (p[j] - p[i]) / l;
-      double best = HUGE_VAL;
-      for(const Eigen::Vector3d& o : lattice.one_ring) best = (std::min)(best, (v - o).squaredNorm());
-      e += best;
-    }
+    for(int j = i + 1; j < 4; ++j)
+      e += internal::squared_distance_to_closest((p[j] - p[i]) / l, lattice.one_ring);
   return e;
 }
 

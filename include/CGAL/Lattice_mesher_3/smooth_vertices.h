@@ -92,15 +92,9 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
   // B of each tetrahedron at its centroid, frozen for a pass: the moves are small against the
   // scale on which the field varies, and the field is not evaluated in the inner loop
   std::vector<Eigen::Matrix3d> maps(mesh.tets.size());
-  std::vector<Eigen::Vector3d> lattice_vectors;   // in units of l*
-  if(o.edge_length > 0.)
-    for(const Eigen::Vector3d& a : o.lattice.one_ring) {
-      lattice_vectors.push_back(a);
-      for(const Eigen::Vector3d& b : o.lattice.one_ring) if((a + b).norm() > .5) lattice_vectors.push_back(a + b);
-    }
-  auto lexicographic = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3); };
-  std::sort(lattice_vectors.begin(), lattice_vectors.end(), lexicographic);
-  lattice_vectors.erase(std::unique(lattice_vectors.begin(), lattice_vectors.end()), lattice_vectors.end());
+  const std::vector<Eigen::Vector3d> lattice_vectors =   // in units of l*
+      o.edge_length > 0. ? internal::lattice_vectors(o.lattice.one_ring) : std::vector<Eigen::Vector3d>();
+  const double tolerance2 = CGAL::square(o.lattice_tolerance);
   auto selected_tet = [&](std::size_t t) {
     std::array<Eigen::Vector3d, 4> p;
     for(int i = 0; i < 4; ++i) p[i] = maps[t] * internal::to_eigen(mesh.points[mesh.tets[t][i]]);
@@ -108,12 +102,9 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     if(angle >= o.select_angle) return false;
     if(angle < o.floor_angle || lattice_vectors.empty()) return true;
     for(int i = 0; i < 4; ++i)
-      for(int j = i + 1; j < 4; ++j) {
-        const Eigen::Vector3d e = (p[j] - p[i]) / o.edge_length;
-        if(std::none_of(lattice_vectors.begin(), lattice_vectors.end(),
-                        [&](const Eigen::Vector3d& u) { return (e - u).squaredNorm() < CGAL::square(o.lattice_tolerance); }))
+      for(int j = i + 1; j < 4; ++j)
+        if(internal::squared_distance_to_closest((p[j] - p[i]) / o.edge_length, lattice_vectors) >= tolerance2)
           return true;
-      }
     return false;   // a lattice tetrahedron
   };
   // The star of v, its other vertices mapped once per search: only v moves during it.
