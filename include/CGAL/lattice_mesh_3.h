@@ -91,7 +91,7 @@ them (`tetrahedralize_particles()`).
   \cgalParamNBegin{gradient_tolerance}
     \cgalParamDescription{EpsG: a round stops when the RMS particle gradient (units of 1/l*) is below it}
     \cgalParamType{double}
-    \cgalParamDefault{0.01 (the last round: 1e-4)}
+    \cgalParamDefault{0.01 (the last round: 3e-3)}
   \cgalParamNEnd
   \cgalParamNBegin{do_flip}
     \cgalParamDescription{improve the connectivity by flips in the isotropic space (`flip_tetrahedra()`)}
