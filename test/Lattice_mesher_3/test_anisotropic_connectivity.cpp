@@ -366,6 +366,42 @@ TEST(Flip_tetrahedra, InvertedSliverOnFlatBoundaryIsFlippedAway)
   EXPECT_NEAR(volume(folded), volume(folded_pair(0.02)), 1e-15);
 }
 
+// Not folded but thin: b just off ac, so that (a, b, c, d) is a cap of the thin boundary triangle
+// (a, b, c), below 40 degrees whatever the interior does. The 2-2 flip of ac on the flat boundary
+// removes it; off a plane (e lifted) the boundary is kept as it is.
+TEST(Flip_tetrahedra, CapOfThinTriangleOnFlatBoundaryIsFlippedAway)
+{
+  const LM::Constant_frame_field_3<Traits> field;
+  const LM::Flip_options o;
+  enum { A, B, C, D, E };
+  Mesh thin = folded_pair(-0.02);
+  ASSERT_TRUE(LM::check_tetrahedral_mesh(thin).valid());
+  const double before = worst_angle(thin, field);
+  ASSERT_LT(before, o.floor_angle);
+  const LM::Flip_result r = LM::flip_tetrahedra(thin, field, o);
+  EXPECT_EQ(r.boundary_flips, 1u);
+  EXPECT_EQ(r.total(), 1u);
+  const LM::Mesh_validity_report v = LM::check_tetrahedral_mesh(thin);
+  EXPECT_TRUE(v.valid()) << v.message;
+  EXPECT_GT(worst_angle(thin, field), before + 10.);
+  std::set<std::array<int, 4> > tets;
+  for(auto t : thin.tets) { std::sort(t.begin(), t.end()); tets.insert(t); }
+  EXPECT_EQ(tets, (std::set<std::array<int, 4> >{ { A, B, D, E }, { B, C, D, E } }));
+  std::cout << "  cap of a thin boundary triangle: smallest angle " << before << " -> " << worst_angle(thin, field) << "\n";
+
+  // disabled, or the two boundary faces not in one plane: nothing to flip
+  LM::Flip_options off = o;
+  off.boundary_flatness = 0.;
+  Mesh kept = folded_pair(-0.02);
+  EXPECT_EQ(LM::flip_tetrahedra(kept, field, off).total(), 0u);
+  EXPECT_EQ(kept.tets, folded_pair(-0.02).tets);
+  Mesh bent = folded_pair(-0.02);
+  bent.points[E] = Point_3(0.5, 1, 0.01);
+  ASSERT_TRUE(LM::check_tetrahedral_mesh(bent).valid());
+  EXPECT_EQ(LM::flip_tetrahedra(bent, field, o).boundary_flips, 0u);
+  EXPECT_EQ(bent.boundary_faces, folded_pair(-0.02).boundary_faces);
+}
+
 // ---------------------------------------------------------------------------------------------
 // The whole pipeline
 
