@@ -263,12 +263,7 @@ double worst_angle(const Mesh& mesh, const Field& field)
   return worst;
 }
 
-std::set<std::array<int, 3> > sorted_faces(const Mesh& mesh)
-{
-  std::set<std::array<int, 3> > faces;
-  for(auto f : mesh.boundary_faces) { std::sort(f.begin(), f.end()); faces.insert(f); }
-  return faces;
-}
+using test_meshes::sorted_faces;
 
 TEST(Flip_tetrahedra, ShapeFlipsNeverRaiseTheShapeEnergyNorInvert)
 {

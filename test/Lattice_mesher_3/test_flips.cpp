@@ -41,12 +41,7 @@ double worst_angle(const LM::Tetrahedral_mesh_3<Point_3>& mesh, const LM::Consta
   return worst;
 }
 
-std::set<std::array<int, 3> > boundary(const LM::Tetrahedral_mesh_3<Point_3>& mesh)
-{
-  std::set<std::array<int, 3> > faces;
-  for(auto f : mesh.boundary_faces) { std::sort(f.begin(), f.end()); faces.insert(f); }
-  return faces;
-}
+using test_meshes::sorted_faces;
 
 // The boundary of `after` is the surface of the unit cube as that of `before` is: the same
 // boundary vertices, every face in one facet plane, the facets' areas summing to 1 each. Only its
@@ -89,7 +84,7 @@ TEST(Flip_tetrahedra, ValidBoundaryKeptWorstAngleNotLowered)
       const LM::Mesh_validity_report v = LM::check_tetrahedral_mesh(m);
       EXPECT_TRUE(v.valid()) << v.message;
       expect_same_cube_surface(mesh, m);
-      if(r.boundary_flips == 0) EXPECT_EQ(boundary(m), boundary(mesh));
+      if(r.boundary_flips == 0) EXPECT_EQ(sorted_faces(m), sorted_faces(mesh));
       // a 2-3 flip adds a tetrahedron and a 3-2 flip removes one; larger edge removals
       // (n tetrahedra into 2n - 4) and boundary flips (n into 2n - 2) only add
       EXPECT_GE(m.tets.size() + r.flips32, tets_before + r.flips23);

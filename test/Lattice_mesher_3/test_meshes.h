@@ -16,7 +16,10 @@
 #include <CGAL/Lattice_mesher_3/frame_fields.h>
 #include <CGAL/Lattice_mesher_3/tetrahedralize_particles.h>
 
+#include <algorithm>
+#include <array>
 #include <random>
+#include <set>
 
 namespace test_meshes {
 
@@ -52,6 +55,15 @@ inline CGAL::Lattice_mesher_3::Tetrahedral_mesh_3<K::Point_3> jittered_mesh(unsi
     ps.push_back(p, box_particle_kind(on));
   }
   return LM::tetrahedralize_particles(ps, unit_cube(), LM::Constant_frame_field_3<CGAL::Lattice_mesher_traits_3<K> >());
+}
+
+// The boundary faces of a mesh as sorted vertex triples, whatever their orientation.
+template <typename Point_3>
+std::set<std::array<int, 3> > sorted_faces(const CGAL::Lattice_mesher_3::Tetrahedral_mesh_3<Point_3>& mesh)
+{
+  std::set<std::array<int, 3> > faces;
+  for(auto f : mesh.boundary_faces) { std::sort(f.begin(), f.end()); faces.insert(f); }
+  return faces;
 }
 
 } // namespace test_meshes

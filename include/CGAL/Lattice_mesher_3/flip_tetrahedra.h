@@ -208,7 +208,7 @@ public:
   // embedding of tetrahedralize_particles(), within 1 degree: a sliver triangle on a flat boundary
   // face, folded over, is the one thing interior flips cannot undo), and for the worst ones on a
   // planar part of the boundary (`Flip_options::boundary_flatness`).
-  int flip_boundary_edge(int a, int c, int max_ring, double flatness = 0.0175)
+  int flip_boundary_edge(int a, int c, int max_ring, double flatness)
   {
     const Tet_list around = tets_around(a, c);
     const int n = int(around.size()) + 1;
@@ -455,6 +455,8 @@ Flip_result flip_tetrahedra(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField&
                             const Flip_options& o = Flip_options())
 {
   typedef internal::Flip_mesh<Point_3, FrameField> Flip_mesh;
+  // an inverted tetrahedron's boundary faces: within 1 degree (sine) of one plane
+  const double folded_flatness = 0.0175;
   Flip_mesh fm(mesh, field, o);
   Flip_result result;
   auto run = [&](typename Flip_mesh::Criterion c) {
@@ -473,10 +475,12 @@ Flip_result flip_tetrahedra(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField&
           }
         for(int i = 0; i < 4 && !done; ++i)
           if(fm.flip23({ v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4] }, c)) { ++result.flips23; done = true; }
-        const bool boundary_flips = fm.inverted(t) || (c == Flip_mesh::ANGLE && fm.angle(t) < o.floor_angle && o.boundary_flatness > 0.);
-        for(int i = 0; i < 4 && !done && boundary_flips; ++i)
+        // how flat two boundary faces must be for t to flip their edge (0: not at all)
+        const double flatness = fm.inverted(t) ? folded_flatness
+                              : c == Flip_mesh::ANGLE && fm.angle(t) < o.floor_angle ? o.boundary_flatness : 0.;
+        for(int i = 0; i < 4 && !done && flatness > 0.; ++i)
           for(int j = i + 1; j < 4 && !done; ++j)
-            if(fm.flip_boundary_edge(v[i], v[j], o.max_ring_size, fm.inverted(t) ? 0.0175 : o.boundary_flatness) > 0) { ++result.boundary_flips; done = true; }
+            if(fm.flip_boundary_edge(v[i], v[j], o.max_ring_size, flatness) > 0) { ++result.boundary_flips; done = true; }
         if(!done) fm.mark_tried(t);
       }
       if(result.total() == before) break;

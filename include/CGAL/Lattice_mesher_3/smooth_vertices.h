@@ -98,7 +98,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
   auto selected_tet = [&](std::size_t t) {
     std::array<Eigen::Vector3d, 4> p;
     for(int i = 0; i < 4; ++i) p[i] = maps[t] * internal::to_eigen(mesh.points[mesh.tets[t][i]]);
-    const double angle = internal::smallest_dihedral_angle_and_radius_ratio(p[0], p[1], p[2], p[3]).first;
+    const double angle = smallest_dihedral_angle(p[0], p[1], p[2], p[3]);
     if(angle >= o.select_angle) return false;
     if(angle < o.floor_angle || lattice_vectors.empty()) return true;
     for(int i = 0; i < 4; ++i)
