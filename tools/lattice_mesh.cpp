@@ -69,8 +69,9 @@ static const char* usage =
   "                   box, as a text file of samples, and exit\n"
   "  --feature-angle  sharp-edge threshold in degrees (default 60)\n"
   "  --no-flips, --smoothing-rounds N\n"
-  "                   connectivity flips and rounds of worst-element smoothing after the\n"
-  "                   tetrahedralization (default: flips on, 2 rounds; 0 keeps the particle positions)\n";
+  "                   connectivity flips and rounds of worst-element smoothing and edge\n"
+  "                   contractions after the tetrahedralization (default: flips on, 2 rounds;\n"
+  "                   0 keeps the particles as they are)\n";
 
 struct Options
 {

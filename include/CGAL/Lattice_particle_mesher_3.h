@@ -17,6 +17,7 @@
 #include <CGAL/Lattice_mesher_3/insert_delete_particles.h>
 #include <CGAL/Lattice_mesher_3/internal/isotropic_embedding.h>
 #include <CGAL/Lattice_mesher_3/optimize_particles.h>
+#include <CGAL/Lattice_mesher_3/collapse_edges.h>
 #include <CGAL/Lattice_mesher_3/flip_tetrahedra.h>
 #include <CGAL/Lattice_mesher_3/smooth_vertices.h>
 #include <CGAL/Lattice_mesher_3/tetrahedralize_particles.h>
@@ -70,7 +71,10 @@ struct Lattice_mesher_parameters
   /// knot1 within 0.05 degree), a quarter of the optimization time.
   double final_gradient_tolerance = 3e-3;
   bool flip = true;                    ///< improve the connectivity by flips (`flip_tetrahedra()`)
-  int smoothing_rounds = 2;            ///< rounds of `smooth_vertices()` and flips on the worst tetrahedra
+  /// Rounds of `smooth_vertices()` and flips on the worst tetrahedra, edge contractions
+  /// (`collapse_edges()`) before the second, and a last smoothing of those below 40 degrees
+  /// followed by contractions; 0: none of these.
+  int smoothing_rounds = 2;
 };
 
 } // namespace Lattice_mesher_3
@@ -301,11 +305,29 @@ public:
     so.threads = p_.threads;
     // lattice tetrahedra stay as they are (the hole-less kernel has no lattice to keep)
     if(lattice_.has_holes()) { so.lattice = lattice_; so.edge_length = p_.edge_length; }
-    for(int round = 0; round < p_.smoothing_rounds; ++round) {
-      if(Lattice_mesher_3::smooth_vertices(mesh, domain_, field_, so) == 0) break;
+    // The extra vertices of lattice defects are removed once the first round has done what
+    // moves could (before it, contractions take vertices the smoothing would have placed well).
+    auto smooth_and_flip = [&](const Lattice_mesher_3::Smoothing_options& options) {
+      const std::size_t moves = Lattice_mesher_3::smooth_vertices(mesh, domain_, field_, options);
       stage("smoothing");
-      if(p_.flip) Lattice_mesher_3::flip_tetrahedra(mesh, field_);
-      stage("flips");
+      if(moves > 0 && p_.flip) { Lattice_mesher_3::flip_tetrahedra(mesh, field_); stage("flips"); }
+      return moves;
+    };
+    for(int round = 0; round < p_.smoothing_rounds; ++round) {
+      if(round > 0) { Lattice_mesher_3::collapse_edges(mesh, field_); stage("contractions"); }
+      if(smooth_and_flip(so) == 0) break;
+    }
+    if(p_.smoothing_rounds > 0) {
+      // Last, the tetrahedra below the floor alone, their shortfall below 45 degrees weighing 50
+      // times more: a little of the mean for the worst (torus, 2300 vertices: 47 -> 12 below 40
+      // degrees, mean -0.03), then the contractions this made possible.
+      Lattice_mesher_3::Smoothing_options worst = so;
+      worst.select_angle = worst.floor_angle;
+      worst.worst_angle = 45.;
+      worst.worst_weight = 50.;
+      smooth_and_flip(worst);
+      Lattice_mesher_3::collapse_edges(mesh, field_);
+      stage("contractions");
     }
     return mesh;
   }

@@ -100,7 +100,9 @@ them (`tetrahedralize_particles()`).
   \cgalParamNEnd
   \cgalParamNBegin{number_of_smoothing_rounds}
     \cgalParamDescription{rounds of worst-element smoothing and flips after the tetrahedralization
-                          (`smooth_vertices()`); 0 keeps the particle positions}
+                          (`smooth_vertices()`), with edge contractions (`collapse_edges()`) before
+                          the second and a last round on the tetrahedra below 40 degrees; 0 keeps
+                          the particles as they are}
     \cgalParamType{int}
     \cgalParamDefault{2}
   \cgalParamNEnd

@@ -5,12 +5,13 @@
 //
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Mesh improvement: flips and worst-element smoothing keep the mesh valid, keep the boundary,
+// Mesh improvement: flips, worst-element smoothing and edge contractions keep the mesh valid, keep the boundary,
 // and never lower the smallest dihedral angle.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
 #include <CGAL/Lattice_mesher_3/check_mesh.h>
+#include <CGAL/Lattice_mesher_3/collapse_edges.h>
 #include <CGAL/Lattice_mesher_3/flip_tetrahedra.h>
 #include <CGAL/Lattice_mesher_3/smooth_vertices.h>
 #include <CGAL/Lattice_mesher_3/tetrahedralize_particles.h>
@@ -21,6 +22,7 @@
 #include "test_meshes.h"
 
 #include <algorithm>
+#include <iostream>
 #include <random>
 #include <set>
 
@@ -139,6 +141,19 @@ TEST(Smooth_vertices, LowersTheShortfallRaisesTheWorstAngleAndKeepsVerticesOnThe
   EXPECT_EQ(single.points, mesh.points);
 }
 
+// The BCC lattice on the unit cube, l* = 1 / n: grid points (corners fixed, edges and faces on
+// the surface) and cube centres.
+LM::Particle_set_3<Point_3> bcc_cube_particles(int n)
+{
+  LM::Particle_set_3<Point_3> ps;
+  for(int i = 0; i <= n; ++i) for(int j = 0; j <= n; ++j) for(int k = 0; k <= n; ++k) {
+    const int on = (i == 0 || i == n) + (j == 0 || j == n) + (k == 0 || k == n);
+    ps.push_back(Point_3(double(i) / n, double(j) / n, double(k) / n), test_meshes::box_particle_kind(on));
+    if(i < n && j < n && k < n) ps.push_back(Point_3((i + .5) / n, (j + .5) / n, (k + .5) / n), LM::Particle_kind::FREE);
+  }
+  return ps;
+}
+
 // A BCC lattice filling the unit cube (l* = 1/4): besides the lattice's own tetrahedra (60
 // degrees), the walls leave half pyramids of 45 degrees, the best there are. The smoothing moves
 // them only when it is not told the lattice (their apex leaves its lattice position).
@@ -146,12 +161,7 @@ TEST(Smooth_vertices, LeavesLatticeTetrahedraAlone)
 {
   const LM::Constant_frame_field_3<Traits> field;
   const int n = 4;
-  LM::Particle_set_3<Point_3> ps;
-  for(int i = 0; i <= n; ++i) for(int j = 0; j <= n; ++j) for(int k = 0; k <= n; ++k) {
-    const int on = (i == 0 || i == n) + (j == 0 || j == n) + (k == 0 || k == n);
-    ps.push_back(Point_3(double(i) / n, double(j) / n, double(k) / n), test_meshes::box_particle_kind(on));
-    if(i < n && j < n && k < n) ps.push_back(Point_3((i + .5) / n, (j + .5) / n, (k + .5) / n), LM::Particle_kind::FREE);
-  }
+  const LM::Particle_set_3<Point_3> ps = bcc_cube_particles(n);
   const LM::Tetrahedral_mesh_3<Point_3> lattice = LM::tetrahedralize_particles(ps, unit_cube(), field);
   ASSERT_TRUE(LM::check_tetrahedral_mesh(lattice).valid());
   EXPECT_NEAR(worst_angle(lattice, field), 45., 1e-6);
@@ -163,6 +173,93 @@ TEST(Smooth_vertices, LeavesLatticeTetrahedraAlone)
   EXPECT_EQ(mesh.points, lattice.points);
   o.edge_length = 0.;   // no lattice
   EXPECT_GT(LM::smooth_vertices(mesh, unit_cube(), field, o), 0u);
+}
+
+// The boundary faces as triples of points (contractions renumber the vertices).
+std::set<std::array<Point_3, 3> > boundary_triangles(const LM::Tetrahedral_mesh_3<Point_3>& mesh)
+{
+  std::set<std::array<Point_3, 3> > faces;
+  for(const auto& f : mesh.boundary_faces) {
+    std::array<Point_3, 3> t{ mesh.points[f[0]], mesh.points[f[1]], mesh.points[f[2]] };
+    std::sort(t.begin(), t.end());
+    faces.insert(t);
+  }
+  return faces;
+}
+
+// A BCC lattice on the unit cube (l* = 1/4) with one extra particle near a lattice point.
+LM::Tetrahedral_mesh_3<Point_3> bcc_cube_with_extra(const Point_3& extra, const LM::Constant_frame_field_3<Traits>& field)
+{
+  LM::Particle_set_3<Point_3> ps = bcc_cube_particles(4);
+  ps.push_back(extra, LM::Particle_kind::FREE);
+  return LM::tetrahedralize_particles(ps, unit_cube(), field);
+}
+
+// The extra particle a fifth of an edge from a cube centre makes the Delaunay tetrahedra around
+// the pair slivers. Contracting their edge gives back a star of lattice quality; nothing else
+// changes.
+TEST(Collapse_edges, RemovesTheExtraVertexOfADefect)
+{
+  const LM::Constant_frame_field_3<Traits> field;
+  LM::Tetrahedral_mesh_3<Point_3> mesh = bcc_cube_with_extra(Point_3(.3875, .3825, .4), field);
+  ASSERT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
+  const LM::Tetrahedral_mesh_3<Point_3> original = mesh;
+  const double before = worst_angle(mesh, field);
+  ASSERT_LT(before, 20.);
+  EXPECT_EQ(LM::collapse_edges(mesh, field), 1u);
+  EXPECT_EQ(mesh.points.size(), original.points.size() - 1);
+  const double after = worst_angle(mesh, field);
+  std::cout << "worst angle " << before << " -> " << after << " degrees\n";
+  EXPECT_GE(after, 45. - 1e-9);   // the walls' half pyramids, the lattice mesh's own worst
+  const LM::Mesh_validity_report v = LM::check_tetrahedral_mesh(mesh);
+  EXPECT_TRUE(v.valid()) << v.message;
+  EXPECT_EQ(boundary_triangles(mesh), boundary_triangles(original));
+  // only free vertices go; the others keep their order
+  for(LM::Particle_kind k : { LM::Particle_kind::FIXED, LM::Particle_kind::SHARP_EDGE, LM::Particle_kind::BOUNDARY })
+    EXPECT_EQ(std::count(mesh.vertex_kinds.begin(), mesh.vertex_kinds.end(), k),
+              std::count(original.vertex_kinds.begin(), original.vertex_kinds.end(), k));
+  // a lattice mesh has nothing to contract
+  EXPECT_EQ(LM::collapse_edges(mesh, field), 0u);
+}
+
+// A free particle on the boundary (as where a tetrahedralization exposes one) is a vertex of
+// boundary faces: removing it would open the boundary, so it stays, however bad its tetrahedra.
+TEST(Collapse_edges, KeepsAFreeParticleExposedOnTheBoundary)
+{
+  const LM::Constant_frame_field_3<Traits> field;
+  const Point_3 extra(.2625, 0., .255);   // on the facet y = 0, near the lattice point (1/4, 0, 1/4)
+  LM::Tetrahedral_mesh_3<Point_3> mesh = bcc_cube_with_extra(extra, field);
+  ASSERT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
+  const LM::Tetrahedral_mesh_3<Point_3> original = mesh;
+  ASSERT_LT(worst_angle(mesh, field), 20.);
+  LM::collapse_edges(mesh, field);
+  EXPECT_NE(std::find(mesh.points.begin(), mesh.points.end(), extra), mesh.points.end());
+  const LM::Mesh_validity_report v = LM::check_tetrahedral_mesh(mesh);
+  EXPECT_TRUE(v.valid()) << v.message;
+  EXPECT_EQ(boundary_triangles(mesh), boundary_triangles(original));
+}
+
+// On jittered meshes, in an anisotropic field too: the smallest angle never falls, the mesh
+// stays valid and its boundary the same.
+TEST(Collapse_edges, KeepsTheBoundaryAndNeverLowersTheWorstAngle)
+{
+  Traits::Matrix_3 t;
+  t << 1.5, 0.2, 0., 0., 1., 0., 0., 0.1, 0.7;
+  std::size_t total = 0;
+  for(unsigned int seed : { 1u, 2u, 3u })
+    for(const LM::Constant_frame_field_3<Traits>& field : { LM::Constant_frame_field_3<Traits>(), LM::Constant_frame_field_3<Traits>(t) }) {
+      LM::Tetrahedral_mesh_3<Point_3> mesh = jittered_mesh(seed);
+      const LM::Tetrahedral_mesh_3<Point_3> original = mesh;
+      const double before = worst_angle(mesh, field);
+      const std::size_t collapses = LM::collapse_edges(mesh, field);
+      total += collapses;
+      EXPECT_EQ(mesh.points.size(), original.points.size() - collapses);
+      EXPECT_GE(worst_angle(mesh, field), before);
+      const LM::Mesh_validity_report v = LM::check_tetrahedral_mesh(mesh);
+      EXPECT_TRUE(v.valid()) << v.message;
+      EXPECT_EQ(boundary_triangles(mesh), boundary_triangles(original));
+    }
+  EXPECT_GT(total, 0u);
 }
 
 } // namespace

@@ -119,10 +119,14 @@ TEST(Lattice_mesh_3, HolelessKernelKeepsItsCountAndFormsNoLattice)
   }
   EXPECT_LT(lattice_fraction(ps, mesher.lattice(), mesher.edge_length()), 0.05);
 
+  // every particle is a vertex of the tetrahedralization; the edge contractions of the
+  // improvement then remove a few interior ones (here 56 of 1501)
+  EXPECT_EQ(LM::tetrahedralize_particles(ps, cube(), field).points.size(), ps.size());
   const LM::Tetrahedral_mesh_3<Point_3> mesh = mesher.tetrahedralize();
   const LM::Mesh_validity_report r = LM::check_tetrahedral_mesh(mesh);
   EXPECT_TRUE(r.valid()) << r.message;
-  EXPECT_EQ(mesh.points.size(), ps.size());
+  EXPECT_LE(mesh.points.size(), ps.size());
+  EXPECT_GT(mesh.points.size(), 0.95 * ps.size());
   const LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, mesher.lattice());
   EXPECT_GT(q.theta_min.mean, 50.);
   EXPECT_GT(q.epsilon.mean, 15.);

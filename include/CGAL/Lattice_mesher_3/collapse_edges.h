@@ -1,0 +1,221 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Lattice_mesher_3 developers
+
+#ifndef CGAL_LATTICE_MESHER_3_COLLAPSE_EDGES_H
+#define CGAL_LATTICE_MESHER_3_COLLAPSE_EDGES_H
+
+#include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
+#include <CGAL/Lattice_mesher_3/mesh_quality.h>
+
+#include <CGAL/Kernel/global_functions_3.h>
+#include <CGAL/enum.h>
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Lattice_mesher_3 {
+
+/// Settings of `collapse_edges()`.
+struct Collapse_options
+{
+  /// The edges of tetrahedra whose smallest dihedral angle (isotropic space, degrees) is below
+  /// this are tried.
+  double floor_angle = 40.;
+};
+
+/*!
+\ingroup PkgLatticeMesher3Flips
+
+Removes vertices at the worst tetrahedra by contracting one of their edges. Where a lattice
+defect (a dislocation of a rotating field, an extra particle where the lattice meets a curved
+boundary) leaves a cluster of bad tetrahedra sharing their vertices, neither a flip nor a move of
+one vertex raises the worst of them; removing the extra vertex can. An interior vertex `a` of a
+tetrahedron below `o.floor_angle` is merged into another vertex `b` of it: the tetrahedra around
+the edge go, the others of `a`'s star become cones from `b` over `a`'s link. An interior `b` is
+then placed where the smallest angle of its new star is largest (a pattern search from `b` and
+from the edge's midpoint, in steps of 30%, 10% and 3% of the star's mean edge, measured in the
+isotropic space); a boundary, sharp-edge or fixed `b` stays, so the boundary does not change. A
+contraction is made only if every tetrahedron of the new star is positively oriented (exact
+orientation tests: the cones then tile `a`'s star, so the mesh stays valid), its smallest angle
+(isotropic space of `field`, B at each centroid) is above that of the stars of `a` and `b`
+together, and it has no more tetrahedra below the floor; of the edges of a tetrahedron, the one
+whose new star is best. Worst tetrahedra first. Vertices are renumbered (the others keep their
+order). Needs `mesh.vertex_kinds`. Returns the number of removed vertices.
+*/
+template <typename Point_3, typename FrameField>
+std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field,
+                           const Collapse_options& o = Collapse_options())
+{
+  if(mesh.vertex_kinds.size() != mesh.points.size())
+    throw std::invalid_argument("collapse_edges(): the mesh needs one particle kind per vertex");
+  typedef std::array<Point_3, 4> Corners;
+  auto angle_of = [&](const Corners& t) {
+    std::array<Eigen::Vector3d, 4> p;
+    for(int i = 0; i < 4; ++i) p[i] = internal::to_eigen(t[i]);
+    const Eigen::Vector3d c = .25 * (p[0] + p[1] + p[2] + p[3]);
+    const Eigen::Matrix3d b = internal::isotropic_map_at<Point_3>(field, c);
+    for(Eigen::Vector3d& q : p) q = b * (q - c);
+    return smallest_dihedral_angle(p[0], p[1], p[2], p[3]);
+  };
+  auto corners = [&](const std::array<int, 4>& t) {
+    return Corners{ mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], mesh.points[t[3]] };
+  };
+  // interior vertices only: the link of a vertex of a boundary face is not a sphere, and a free
+  // particle may lie on the boundary where the tetrahedralization exposed it
+  std::vector<char> interior(mesh.points.size(), 0);
+  for(std::size_t v = 0; v < mesh.points.size(); ++v) interior[v] = mesh.vertex_kinds[v] == Particle_kind::FREE;
+  for(const std::array<int, 3>& f : mesh.boundary_faces)
+    for(int v : f) interior[v] = 0;
+  std::vector<std::vector<int> > star(mesh.points.size());
+  std::vector<double> angle(mesh.tets.size());
+  std::vector<std::pair<double, int> > worst;
+  for(std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    for(int v : mesh.tets[t]) star[v].push_back(int(t));
+    angle[t] = angle_of(corners(mesh.tets[t]));
+    if(angle[t] < o.floor_angle) worst.emplace_back(angle[t], int(t));
+  }
+  std::sort(worst.begin(), worst.end());
+  auto contains = [](const std::array<int, 4>& t, int v) { return std::find(t.begin(), t.end(), v) != t.end(); };
+
+  // The star of b after a is merged into it, as corners with b's slot marked: the cones over
+  // a's link, and b's own tetrahedra but those around the edge.
+  struct Star_tet { Corners p; int k; };
+  struct Score { double worst; int below; };
+  auto merged_star = [&](int a, int b, std::vector<Star_tet>& out) {
+    out.clear();
+    for(int v : { a, b })
+      for(int s : star[v]) {
+        const std::array<int, 4>& t = mesh.tets[s];
+        if(contains(t, v == a ? b : a)) continue;
+        Star_tet e{ corners(t), int(std::find(t.begin(), t.end(), v) - t.begin()) };
+        out.push_back(e);
+      }
+  };
+  // smallest angle and count below the floor with b at `at`, or worst -1 if a tetrahedron is
+  // not positive
+  auto score = [&](std::vector<Star_tet>& st, const Point_3& at) {
+    Score r{ 180., 0 };
+    for(Star_tet& e : st) {
+      e.p[e.k] = at;
+      if(CGAL::orientation(e.p[0], e.p[1], e.p[2], e.p[3]) != CGAL::POSITIVE) return Score{ -1., 0 };
+      const double x = angle_of(e.p);
+      r.worst = (std::min)(r.worst, x);
+      r.below += x < o.floor_angle;
+    }
+    return r;
+  };
+  auto better = [](const Score& x, const Score& y) { return x.worst > y.worst + 1e-9; };
+  // where b goes, and its score
+  std::vector<Star_tet> st;
+  auto place = [&](int a, int b, Point_3& at) {
+    merged_star(a, b, st);
+    at = mesh.points[b];
+    Score best = score(st, at);
+    if(!interior[b]) return best;
+    const Point_3 mid = CGAL::midpoint(mesh.points[a], mesh.points[b]);
+    const Score m = score(st, mid);
+    if(better(m, best)) { best = m; at = mid; }
+    const Eigen::Matrix3d map = internal::isotropic_map_at<Point_3>(field, internal::to_eigen(at));
+    double mean_edge = 0.;
+    for(const Star_tet& e : st)
+      for(int i = 0; i < 4; ++i)
+        if(i != e.k) mean_edge += (map * (internal::to_eigen(e.p[i]) - internal::to_eigen(at))).norm() / (3. * st.size());
+    std::vector<Eigen::Vector3d> directions;
+    for(int d = 0; d < 6; ++d) { directions.emplace_back(Eigen::Vector3d::Zero()); directions.back()[d / 2] = (d % 2) ? -1. : 1.; }
+    for(int d = 0; d < 8; ++d)
+      directions.push_back(Eigen::Vector3d((d & 1) ? -1. : 1., (d & 2) ? -1. : 1., (d & 4) ? -1. : 1.));
+    for(Eigen::Vector3d& d : directions) d /= (map * d).norm();   // unit isotropic length
+    for(double step : { .3, .1, .03 })
+      for(int repeat = 0, improved = 1; improved && repeat < 4; ++repeat) {
+        improved = 0;
+        for(const Eigen::Vector3d& d : directions) {
+          const Eigen::Vector3d y = internal::to_eigen(at) + step * mean_edge * d;
+          const Point_3 candidate(y[0], y[1], y[2]);
+          const Score c = score(st, candidate);
+          if(better(c, best)) { best = c; at = candidate; improved = 1; }
+        }
+      }
+    return best;
+  };
+
+  std::vector<char> dead(mesh.tets.size(), 0), removed(mesh.points.size(), 0);
+  std::size_t collapses = 0;
+  for(const std::pair<double, int>& w : worst) {
+    if(dead[w.second] || angle[w.second] >= o.floor_angle) continue;
+    const std::array<int, 4> t = mesh.tets[w.second];
+    int best_a = -1, best_b = -1;
+    Point_3 best_at;
+    Score best{ -1., 0 };
+    for(int a : t) {
+      if(!interior[a]) continue;
+      for(int b : t) {
+        if(b == a) continue;
+        Score before{ 180., 0 };
+        for(int v : { a, b })
+          for(int s : star[v])
+            if(v == a || !contains(mesh.tets[s], a)) {
+              before.worst = (std::min)(before.worst, angle[s]);
+              before.below += angle[s] < o.floor_angle;
+            }
+        Point_3 at;
+        const Score c = place(a, b, at);
+        if(better(c, before) && c.below <= before.below && better(c, best)) { best = c; best_a = a; best_b = b; best_at = at; }
+      }
+    }
+    if(best_a < 0) continue;
+    for(int s : star[best_a]) {
+      std::array<int, 4>& u = mesh.tets[s];
+      if(contains(u, best_b)) {
+        dead[s] = 1;
+        for(int v : u)
+          if(v != best_a) star[v].erase(std::find(star[v].begin(), star[v].end(), s));
+      } else {
+        *std::find(u.begin(), u.end(), best_a) = best_b;
+        star[best_b].push_back(s);
+      }
+    }
+    star[best_a].clear();
+    removed[best_a] = 1;
+    mesh.points[best_b] = best_at;
+    for(int s : star[best_b]) angle[s] = angle_of(corners(mesh.tets[s]));
+    ++collapses;
+  }
+  if(collapses == 0) return 0;
+
+  std::vector<int> index(mesh.points.size(), -1);
+  std::size_t kept = 0;
+  for(std::size_t v = 0; v < mesh.points.size(); ++v)
+    if(!removed[v]) {
+      index[v] = int(kept);
+      mesh.points[kept] = mesh.points[v];
+      mesh.vertex_kinds[kept] = mesh.vertex_kinds[v];
+      ++kept;
+    }
+  mesh.points.resize(kept);
+  mesh.vertex_kinds.resize(kept);
+  std::size_t live = 0;
+  for(std::size_t s = 0; s < mesh.tets.size(); ++s)
+    if(!dead[s]) {
+      for(int& v : mesh.tets[s]) v = index[v];
+      mesh.tets[live++] = mesh.tets[s];
+    }
+  mesh.tets.resize(live);
+  for(std::array<int, 3>& f : mesh.boundary_faces)
+    for(int& v : f) v = index[v];
+  return collapses;
+}
+
+} // namespace Lattice_mesher_3
+} // namespace CGAL
+
+#endif // CGAL_LATTICE_MESHER_3_COLLAPSE_EDGES_H
