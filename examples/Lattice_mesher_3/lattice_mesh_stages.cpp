@@ -10,8 +10,8 @@
 // Runs the stages of the lattice mesher one by one on the cube [0.1, 1.1]^3, as
 // CGAL::Lattice_particle_mesher_3 chains them: initial particles at a coarse edge length;
 // at each level, rounds of L-BFGS optimization, deletion and insertion, then refinement to
-// the next level; a closing tight round; the tetrahedralization; flips and smoothing of the
-// worst tetrahedra. Calling the stages directly lets a program replace one (here the start:
+// the next level; a closing tight round; the tetrahedralization; flips, smoothing and edge
+// contractions at the worst tetrahedra. Calling the stages directly lets a program replace one (here the start:
 // the program places the particles itself) and look at the particles between stages (here:
 // how many ended up at a corner, on a sharp edge, on the boundary and inside).
 
@@ -23,6 +23,7 @@
 #include <CGAL/Lattice_mesher_3/optimize_particles.h>
 #include <CGAL/Lattice_mesher_3/insert_delete_particles.h>
 #include <CGAL/Lattice_mesher_3/tetrahedralize_particles.h>
+#include <CGAL/Lattice_mesher_3/collapse_edges.h>
 #include <CGAL/Lattice_mesher_3/flip_tetrahedra.h>
 #include <CGAL/Lattice_mesher_3/smooth_vertices.h>
 #include <CGAL/Lattice_mesher_3/check_mesh.h>
@@ -112,10 +113,12 @@ int main()
     // 4. Tetrahedralization: the Delaunay tetrahedralization restricted to the domain.
     LM::Tetrahedral_mesh_3<Point_3> mesh = LM::tetrahedralize_particles(particles, domain, field);
 
-    // 5. Improvement of the worst tetrahedra in the isotropic space: flips, then vertex moves.
+    // 5. Improvement of the worst tetrahedra in the isotropic space: flips, vertex moves, then
+    // the removal of extra vertices where moves could not help.
     const LM::Flip_result flips = LM::flip_tetrahedra(mesh, field);
     const std::size_t moves = LM::smooth_vertices(mesh, domain, field);
-    std::printf("%zu flips, %zu vertex moves\n", flips.total(), moves);
+    const std::size_t removed = LM::collapse_edges(mesh, field);
+    std::printf("%zu flips, %zu vertex moves, %zu vertices removed\n", flips.total(), moves, removed);
     const auto meshed = std::chrono::steady_clock::now();
 
     const LM::Mesh_validity_report validity = LM::check_tetrahedral_mesh(mesh);
