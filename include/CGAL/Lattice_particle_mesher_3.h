@@ -13,11 +13,11 @@
 #include <CGAL/Lattice_mesher_traits_3.h>
 #include <CGAL/Lattice_mesher_3/Lattice_3.h>
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
+#include <CGAL/Lattice_mesher_3/collapse_edges.h>
 #include <CGAL/Lattice_mesher_3/frame_fields.h>
 #include <CGAL/Lattice_mesher_3/insert_delete_particles.h>
 #include <CGAL/Lattice_mesher_3/internal/isotropic_embedding.h>
 #include <CGAL/Lattice_mesher_3/optimize_particles.h>
-#include <CGAL/Lattice_mesher_3/collapse_edges.h>
 #include <CGAL/Lattice_mesher_3/flip_tetrahedra.h>
 #include <CGAL/Lattice_mesher_3/smooth_vertices.h>
 #include <CGAL/Lattice_mesher_3/tetrahedralize_particles.h>

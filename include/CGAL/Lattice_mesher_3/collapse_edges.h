@@ -12,6 +12,7 @@
 
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/mesh_quality.h>
+#include <CGAL/Lattice_mesher_3/smooth_vertices.h>
 
 #include <CGAL/Kernel/global_functions_3.h>
 #include <CGAL/enum.h>
@@ -42,9 +43,8 @@ boundary) leaves a cluster of bad tetrahedra sharing their vertices, neither a f
 one vertex raises the worst of them; removing the extra vertex can. An interior vertex `a` of a
 tetrahedron below `o.floor_angle` is merged into another vertex `b` of it: the tetrahedra around
 the edge go, the others of `a`'s star become cones from `b` over `a`'s link. An interior `b` is
-then placed where the smallest angle of its new star is largest (a pattern search from `b` and
-from the edge's midpoint, in steps of 30%, 10% and 3% of the star's mean edge, measured in the
-isotropic space); a boundary, sharp-edge or fixed `b` stays, so the boundary does not change. A
+then placed where the smallest angle of its new star is largest (the pattern search of
+`smooth_vertices()` over the axis and diagonal directions, from `b` or the edge's midpoint); a boundary, sharp-edge or fixed `b` stays, so the boundary does not change. A
 contraction is made only if every tetrahedron of the new star is positively oriented (exact
 orientation tests: the cones then tile `a`'s star, so the mesh stays valid), its smallest angle
 (isotropic space of `field`, B at each centroid) is above that of the stars of `a` and `b`
@@ -60,11 +60,7 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
     throw std::invalid_argument("collapse_edges(): the mesh needs one particle kind per vertex");
   typedef std::array<Point_3, 4> Corners;
   auto angle_of = [&](const Corners& t) {
-    std::array<Eigen::Vector3d, 4> p;
-    for(int i = 0; i < 4; ++i) p[i] = internal::to_eigen(t[i]);
-    const Eigen::Vector3d c = .25 * (p[0] + p[1] + p[2] + p[3]);
-    const Eigen::Matrix3d b = internal::isotropic_map_at<Point_3>(field, c);
-    for(Eigen::Vector3d& q : p) q = b * (q - c);
+    const std::array<Eigen::Vector3d, 4> p = internal::isotropic_tetrahedron(field, t);
     return smallest_dihedral_angle(p[0], p[1], p[2], p[3]);
   };
   auto corners = [&](const std::array<int, 4>& t) {
@@ -130,21 +126,15 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
     for(const Star_tet& e : st)
       for(int i = 0; i < 4; ++i)
         if(i != e.k) mean_edge += (map * (internal::to_eigen(e.p[i]) - internal::to_eigen(at))).norm() / (3. * st.size());
-    std::vector<Eigen::Vector3d> directions;
-    for(int d = 0; d < 6; ++d) { directions.emplace_back(Eigen::Vector3d::Zero()); directions.back()[d / 2] = (d % 2) ? -1. : 1.; }
-    for(int d = 0; d < 8; ++d)
-      directions.push_back(Eigen::Vector3d((d & 1) ? -1. : 1., (d & 2) ? -1. : 1., (d & 4) ? -1. : 1.));
+    std::vector<Eigen::Vector3d> directions = internal::axis_and_diagonal_directions();
     for(Eigen::Vector3d& d : directions) d /= (map * d).norm();   // unit isotropic length
-    for(double step : { .3, .1, .03 })
-      for(int repeat = 0, improved = 1; improved && repeat < 4; ++repeat) {
-        improved = 0;
-        for(const Eigen::Vector3d& d : directions) {
-          const Eigen::Vector3d y = internal::to_eigen(at) + step * mean_edge * d;
-          const Point_3 candidate(y[0], y[1], y[2]);
-          const Score c = score(st, candidate);
-          if(better(c, best)) { best = c; at = candidate; improved = 1; }
-        }
-      }
+    internal::pattern_search(internal::to_eigen(at), directions, mean_edge, [&](const Eigen::Vector3d& y, Eigen::Vector3d& x) {
+      const Point_3 candidate(y[0], y[1], y[2]);
+      const Score c = score(st, candidate);
+      if(!better(c, best)) return false;
+      best = c; at = candidate; x = y;
+      return true;
+    });
     return best;
   };
 

@@ -112,11 +112,8 @@ public:
   // either orientation: the angles are unsigned (edge removal measures its b side reversed)
   Flip_measure measure(const std::array<int, 4>& t) const
   {
-    std::array<Eigen::Vector3d, 4> p;
-    for(int i = 0; i < 4; ++i) p[i] = to_eigen(mesh_.points[t[i]]);
-    const Eigen::Vector3d c = .25 * (p[0] + p[1] + p[2] + p[3]);
-    const Eigen::Matrix3d b = isotropic_map_at<Point_3>(field_, c);
-    for(Eigen::Vector3d& q : p) q = b * (q - c);
+    const std::array<Eigen::Vector3d, 4> p = isotropic_tetrahedron(
+        field_, std::array<Point_3, 4>{ mesh_.points[t[0]], mesh_.points[t[1]], mesh_.points[t[2]], mesh_.points[t[3]] });
     return { smallest_dihedral_angle(p[0], p[1], p[2], p[3]),
              has_shape() ? lattice_shape_energy(p, o_.lattice, o_.edge_length) : 0. };
   }

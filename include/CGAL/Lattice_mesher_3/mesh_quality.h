@@ -158,17 +158,25 @@ Eigen::Matrix3d isotropic_map_at(const FrameField& field, const Eigen::Vector3d&
   return isotropic_map(t, where);
 }
 
-// The tetrahedron t of `mesh` in the isotropic space: mapped by B at its centroid, about it.
+// The tetrahedron with these corners in the isotropic space: mapped by B at its centroid, about it.
 template <typename Point_3, typename FrameField>
-std::array<Eigen::Vector3d, 4> isotropic_tetrahedron(const Tetrahedral_mesh_3<Point_3>& mesh,
-                                                     const FrameField& field, std::size_t t)
+std::array<Eigen::Vector3d, 4> isotropic_tetrahedron(const FrameField& field, const std::array<Point_3, 4>& corners)
 {
   std::array<Eigen::Vector3d, 4> p;
-  for(int i = 0; i < 4; ++i) p[i] = to_eigen(mesh.points[mesh.tets[t][i]]);
+  for(int i = 0; i < 4; ++i) p[i] = to_eigen(corners[i]);
   const Eigen::Vector3d centroid = .25 * (p[0] + p[1] + p[2] + p[3]);
   const Eigen::Matrix3d b = isotropic_map_at<Point_3>(field, centroid);
   for(Eigen::Vector3d& q : p) q = b * (q - centroid);
   return p;
+}
+
+// The tetrahedron t of `mesh` in the isotropic space.
+template <typename Point_3, typename FrameField>
+std::array<Eigen::Vector3d, 4> isotropic_tetrahedron(const Tetrahedral_mesh_3<Point_3>& mesh,
+                                                     const FrameField& field, std::size_t t)
+{
+  const std::array<int, 4>& v = mesh.tets[t];
+  return isotropic_tetrahedron(field, std::array<Point_3, 4>{ mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.points[v[3]] });
 }
 
 // Area vectors (twice the area) of the faces opposite a, b, c, d, all outward for a positive

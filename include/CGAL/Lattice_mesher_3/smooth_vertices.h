@@ -61,6 +61,34 @@ struct Smoothing_options
   int threads = 1;
 };
 
+namespace internal {
+
+// The 6 axis and 8 diagonal directions a free vertex tries.
+inline std::vector<Eigen::Vector3d> axis_and_diagonal_directions()
+{
+  std::vector<Eigen::Vector3d> directions;
+  for(int a = 0; a < 6; ++a) { directions.emplace_back(Eigen::Vector3d::Zero()); directions.back()[a / 2] = (a % 2) ? -1. : 1.; }
+  for(int d = 0; d < 8; ++d)
+    directions.push_back(Eigen::Vector3d((d & 1) ? -1. : 1., (d & 2) ? -1. : 1., (d & 4) ? -1. : 1.) / std::sqrt(3.));
+  return directions;
+}
+
+// Pattern search from x: steps of 30%, 10% and 3% of `unit` along each direction, each step size
+// repeated while it improves (at most 4 times). `attempt(y, x)` tries the point y; if it takes
+// it, it sets x to where the vertex went and returns true.
+template <typename Attempt>
+void pattern_search(Eigen::Vector3d x, const std::vector<Eigen::Vector3d>& directions, double unit, Attempt attempt)
+{
+  for(double step : { .3, .1, .03 })
+    for(int repeat = 0, improved = 1; improved && repeat < 4; ++repeat) {
+      improved = 0;
+      for(const Eigen::Vector3d& d : directions)
+        if(attempt(Eigen::Vector3d(x + step * unit * d), x)) improved = 1;
+    }
+}
+
+} // namespace internal
+
 /*!
 \ingroup PkgLatticeMesher3Flips
 
@@ -204,9 +232,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
       default: break;
     }
     if(directions.empty()) {
-      for(int a = 0; a < 6; ++a) { directions.emplace_back(Eigen::Vector3d::Zero()); directions.back()[a / 2] = (a % 2) ? -1. : 1.; }
-      for(int d = 0; d < 8; ++d)
-        directions.push_back(Eigen::Vector3d((d & 1) ? -1. : 1., (d & 2) ? -1. : 1., (d & 4) ? -1. : 1.) / std::sqrt(3.));
+      directions = internal::axis_and_diagonal_directions();
       add_centroid_direction(centroid - x);
     }
     // each direction scaled to unit isotropic length (exactly as it is when B = I)
@@ -216,16 +242,14 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     Score best = star_quality(st, mesh.points[v], HUGE_VAL);
     worst_first(st);
     std::size_t accepted = 0;
-    for(double step : { .3, .1, .03 })
-      for(int repeat = 0, improved = 1; improved && repeat < 4; ++repeat) {
-        improved = 0;
-        for(const Eigen::Vector3d& d : directions) {
-          const Eigen::Vector3d y = internal::to_eigen(mesh.points[v]) + step * mean_edge * d;
-          const Point_3 candidate = constrain(v, Point_3(y[0], y[1], y[2]));
-          const Score q = star_quality(st, candidate, best.penalty);
-          if(better(q, best)) { best = q; mesh.points[v] = candidate; improved = 1; ++accepted; worst_first(st); }
-        }
-      }
+    internal::pattern_search(x, directions, mean_edge, [&](const Eigen::Vector3d& y, Eigen::Vector3d& at) {
+      const Point_3 candidate = constrain(v, Point_3(y[0], y[1], y[2]));
+      const Score q = star_quality(st, candidate, best.penalty);
+      if(!better(q, best)) return false;
+      best = q; mesh.points[v] = candidate; ++accepted; worst_first(st);
+      at = internal::to_eigen(candidate);
+      return true;
+    });
     return accepted;
   };
 
