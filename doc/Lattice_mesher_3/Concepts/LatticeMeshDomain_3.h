@@ -31,6 +31,10 @@ public:
   CGAL::Bbox_3 bbox() const;
   /// `true` if `p` is strictly inside the domain
   bool is_inside(const Point_3& p) const;
+  /// a lower bound of the distance from `p` to the boundary surface if `p` is inside, else 0;
+  /// 0 is always valid. Meant to be far cheaper than `project_on_surface()`: the mesher skips
+  /// the projections of particles that it places deep inside.
+  double inside_distance_bound(const Point_3& p) const;
   /// closest point of the boundary surface to `p`, with the unit outward normal there
   Projection project_on_surface(const Point_3& p) const;
   /// number of feature curves (0 for a smooth domain)

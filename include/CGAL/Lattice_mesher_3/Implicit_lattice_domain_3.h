@@ -96,6 +96,9 @@ public:
 
   bool is_inside(const Point_3& p) const { return value(p) < 0.; }
 
+  /// 0: `f` gives no bound of the distance to its zero set
+  double inside_distance_bound(const Point_3&) const { return 0.; }
+
   Projection project_on_surface(const Point_3& p) const
   {
     const double fp = value(p);

@@ -11,6 +11,7 @@
 #define CGAL_LATTICE_MESHER_3_POLYHEDRAL_LATTICE_DOMAIN_3_H
 
 #include <CGAL/Lattice_mesher_3/Boundary_projection_3.h>
+#include <CGAL/Lattice_mesher_3/internal/surface_cell_grid.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -90,7 +91,20 @@ public:
   /// @{
   CGAL::Bbox_3 bbox() const { return m_data->bbox; }
 
-  bool is_inside(const Point_3& p) const { return m_data->side_of(p) == CGAL::ON_BOUNDED_SIDE; }
+  /// a ray cast only where the cell grid (below) does not tell
+  bool is_inside(const Point_3& p) const
+  {
+    const int side = m_data->cells.side(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    return side != 0 ? side > 0 : m_data->side_of(p) == CGAL::ON_BOUNDED_SIDE;
+  }
+
+  /// from a grid of 128 cubic cells along the longest side of the bounding box, classified in
+  /// the constructor: (k - 1) h, with h the cell side and k the number of cells (Chebyshev
+  /// distance) from the cell of `p` to the nearest cell that meets the surface
+  double inside_distance_bound(const Point_3& p) const
+  {
+    return m_data->cells.inside_distance_bound(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
 
   /// the normal is the closest face's unit outward normal
   Projection project_on_surface(const Point_3& p) const
@@ -254,6 +268,7 @@ private:
     Segment_tree segment_tree;
     std::vector<Segment_tree> curve_trees;
     CGAL::Bbox_3 bbox;
+    internal::Surface_cell_grid_3 cells;
     double volume, area, curves_length = 0.;
 
     Data(const Surface_mesh& input, double angle)
@@ -268,6 +283,14 @@ private:
       for(typename Surface_mesh::Face_index f : surface.faces())
         face_normals.push_back(PMP::compute_face_normal(f, surface));
       bbox = PMP::bbox(surface);
+      std::vector<typename K::Triangle_3> triangles;
+      triangles.reserve(surface.number_of_faces());
+      for(typename Surface_mesh::Face_index f : surface.faces()) {
+        const typename Surface_mesh::Halfedge_index h = surface.halfedge(f);
+        triangles.emplace_back(surface.point(surface.source(h)), surface.point(surface.target(h)),
+                               surface.point(surface.target(surface.next(h))));
+      }
+      cells = internal::Surface_cell_grid_3(bbox, triangles);
       volume = CGAL::to_double(PMP::volume(surface));
       area = CGAL::to_double(PMP::area(surface));
       build_curves();

@@ -116,13 +116,13 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
   const double block = (std::max)(min_distance, coincidence);
   double offset_radius = 0.;
   for(const Eigen::Vector3d& off : offsets) offset_radius = (std::max)(offset_radius, off.norm());
-  // Distance of each particle to the boundary: a candidate closer to its particle than that is
-  // inside without an inside test (the ball around an inside point up to the surface is inside).
+  // A bound of each particle's distance to the boundary: a candidate closer to its particle
+  // than that is inside without an inside test (the ball around an inside point up to the
+  // surface is inside).
   std::vector<double> clearance(n, 0.);
 #pragma omp parallel for num_threads(o.threads) schedule(static)
   for(std::ptrdiff_t i = std::ptrdiff_t(n - sources); i < std::ptrdiff_t(n); ++i)
-    if(ps.kinds[i] == Particle_kind::FREE && domain.is_inside(ps.points[i]))
-      clearance[i] = std::sqrt(domain.project_on_surface(ps.points[i]).squared_distance);
+    if(ps.kinds[i] == Particle_kind::FREE) clearance[i] = domain.inside_distance_bound(ps.points[i]);
   bool failed = false;
   std::string what;
 #pragma omp parallel num_threads(o.threads)

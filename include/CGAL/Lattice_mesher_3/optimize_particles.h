@@ -205,7 +205,9 @@ std::size_t snap_particles_to_boundary(Particle_set_3<Point_3>& ps, const Domain
     Particle_kind& kind = ps.kinds[i];
     if(kind == Particle_kind::FIXED) continue;
     if(kind == Particle_kind::SHARP_EDGE) { p = domain.project_on_curve(p, std::size_t(ps.feature[i])).point; continue; }
-    const Eigen::Matrix3d B = internal::isotropic_map(field.frame(p), p);
+    const Eigen::Matrix3d T = field.frame(p), B = internal::isotropic_map(T, p);
+    // a free particle deep inside by the domain's cheap bound (|B d| >= |d| / |T|) stays
+    if(kind == Particle_kind::FREE && domain.inside_distance_bound(p) > threshold * T.norm()) continue;
     const auto s = domain.project_on_surface(p);
     if(kind == Particle_kind::FREE) {
       auto clearance = [&](const Point_3& q, const decltype(s)& sq) {   // isotropic; -1 outside

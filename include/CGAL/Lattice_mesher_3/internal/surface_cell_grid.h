@@ -1,0 +1,161 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Lattice_mesher_3 developers
+
+#ifndef CGAL_LATTICE_MESHER_3_INTERNAL_SURFACE_CELL_GRID_H
+#define CGAL_LATTICE_MESHER_3_INTERNAL_SURFACE_CELL_GRID_H
+
+#include <CGAL/Bbox_3.h>
+#include <CGAL/intersections.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+namespace CGAL {
+namespace Lattice_mesher_3 {
+namespace internal {
+
+// Cubic cells over the box of a closed surface, each classified once: touched (its closed box
+// meets a triangle: exact test), outside or inside (flood fill from the padding: two untouched
+// cells sharing a face lie on the same side), and for inside cells the Chebyshev distance k, in
+// cells, to the nearest touched cell. A point in an untouched cell needs no ray cast to be
+// classified, and one in an inside cell is at least (k - 1) h from the surface: the mesher
+// skips the projections of particles deep inside (most of them) with it.
+class Surface_cell_grid_3
+{
+public:
+  Surface_cell_grid_3() = default;
+
+  // `triangles`: a range of K::Triangle_3 (or anything with vertex(0..2) and a bbox())
+  template <typename TriangleRange>
+  Surface_cell_grid_3(const CGAL::Bbox_3& box, const TriangleRange& triangles, int resolution = 128)
+  {
+    const double extent = (std::max)({ box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin() });
+    if(!(extent > 0.) || !std::isfinite(extent)) return;   // no grid: every query answers "unknown"
+    h_ = extent / resolution;
+    // one cell of padding on each side: the flood fill starts outside the surface
+    origin_ = { box.xmin() - h_, box.ymin() - h_, box.zmin() - h_ };
+    const std::array<double, 3> size = { box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin() };
+    for(int a = 0; a < 3; ++a) n_[a] = int(std::ceil(size[a] / h_)) + 3;
+    state_.assign(std::size_t(n_[0]) * n_[1] * n_[2], UNKNOWN);
+    depth_.assign(state_.size(), 0);
+
+    // touched cells: a margin of 1e-6 h on each box keeps the test valid for a point rounded
+    // into a neighbouring cell by cell_of()
+    for(const auto& t : triangles) {
+      const CGAL::Bbox_3 tb = t.bbox();
+      std::array<int, 3> lo = cell_of(tb.xmin(), tb.ymin(), tb.zmin()), hi = cell_of(tb.xmax(), tb.ymax(), tb.zmax());
+      for(int a = 0; a < 3; ++a) { lo[a] = (std::max)(lo[a] - 1, 0); hi[a] = (std::min)(hi[a] + 1, n_[a] - 1); }
+      for(int i = lo[0]; i <= hi[0]; ++i)
+        for(int j = lo[1]; j <= hi[1]; ++j)
+          for(int k = lo[2]; k <= hi[2]; ++k) {
+            unsigned char& s = state_[index(i, j, k)];
+            if(s == TOUCHED) continue;
+            const double m = 1e-6 * h_;
+            const CGAL::Bbox_3 cell(origin_[0] + i * h_ - m, origin_[1] + j * h_ - m, origin_[2] + k * h_ - m,
+                                    origin_[0] + (i + 1) * h_ + m, origin_[1] + (j + 1) * h_ + m, origin_[2] + (k + 1) * h_ + m);
+            if(CGAL::do_intersect(t, cell)) s = TOUCHED;
+          }
+    }
+    // outside: untouched cells face-connected to the padding
+    std::deque<std::array<int, 3> > queue;
+    auto visit = [&](int i, int j, int k, unsigned char from, unsigned char to) {
+      if(i < 0 || j < 0 || k < 0 || i >= n_[0] || j >= n_[1] || k >= n_[2]) return;
+      unsigned char& s = state_[index(i, j, k)];
+      if(s == from) { s = to; queue.push_back({ i, j, k }); }
+    };
+    visit(0, 0, 0, UNKNOWN, OUTSIDE);
+    while(!queue.empty()) {
+      const std::array<int, 3> c = queue.front();
+      queue.pop_front();
+      for(int a = 0; a < 3; ++a)
+        for(int d : { -1, 1 }) {
+          std::array<int, 3> q = c;
+          q[a] += d;
+          visit(q[0], q[1], q[2], UNKNOWN, OUTSIDE);
+        }
+    }
+    // inside: the rest; depth by a breadth-first search from the touched cells over the 26
+    // neighbours (Chebyshev distance), saturated at 255
+    for(unsigned char& s : state_) if(s == UNKNOWN) s = INSIDE;
+    for(int i = 0; i < n_[0]; ++i)
+      for(int j = 0; j < n_[1]; ++j)
+        for(int k = 0; k < n_[2]; ++k)
+          if(state_[index(i, j, k)] == TOUCHED) queue.push_back({ i, j, k });
+    std::vector<char> done(state_.size(), 0);
+    for(const std::array<int, 3>& c : queue) done[index(c[0], c[1], c[2])] = 1;
+    while(!queue.empty()) {
+      const std::array<int, 3> c = queue.front();
+      queue.pop_front();
+      const unsigned char next = (unsigned char)((std::min)(int(depth_[index(c[0], c[1], c[2])]) + 1, 255));
+      for(int di = -1; di <= 1; ++di)
+        for(int dj = -1; dj <= 1; ++dj)
+          for(int dk = -1; dk <= 1; ++dk) {
+            const int i = c[0] + di, j = c[1] + dj, k = c[2] + dk;
+            if(i < 0 || j < 0 || k < 0 || i >= n_[0] || j >= n_[1] || k >= n_[2]) continue;
+            const std::size_t q = index(i, j, k);
+            if(done[q] || state_[q] != INSIDE) continue;
+            done[q] = 1;
+            depth_[q] = next;
+            queue.push_back({ i, j, k });
+          }
+    }
+  }
+
+  // +1: strictly inside, -1: outside (off the grid too), 0: unknown (a touched cell, no grid,
+  // a non-finite point)
+  int side(double x, double y, double z) const
+  {
+    if(state_.empty() || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) return 0;
+    const std::array<int, 3> c = cell_of(x, y, z);
+    if(c[0] < 0 || c[1] < 0 || c[2] < 0 || c[0] >= n_[0] || c[1] >= n_[1] || c[2] >= n_[2]) return -1;
+    switch(state_[index(c[0], c[1], c[2])]) {
+      case INSIDE: return 1;
+      case OUTSIDE: return -1;
+      default: return 0;
+    }
+  }
+
+  // a lower bound of the distance to the surface of a point inside; 0 if not known inside
+  double inside_distance_bound(double x, double y, double z) const
+  {
+    if(side(x, y, z) != 1) return 0.;
+    const std::array<int, 3> c = cell_of(x, y, z);
+    return (std::max)(int(depth_[index(c[0], c[1], c[2])]) - 1, 0) * h_;
+  }
+
+private:
+  enum : unsigned char { UNKNOWN = 0, TOUCHED, OUTSIDE, INSIDE };
+
+  std::array<int, 3> cell_of(double x, double y, double z) const
+  {
+    const std::array<double, 3> p = { x, y, z };
+    std::array<int, 3> c;
+    for(int a = 0; a < 3; ++a) {
+      const double f = std::floor((p[a] - origin_[a]) / h_);
+      c[a] = f < 0. ? -1 : f >= double(n_[a]) ? n_[a] : int(f);   // -1 and n_[a]: off the grid
+    }
+    return c;
+  }
+  std::size_t index(int i, int j, int k) const { return (std::size_t(i) * n_[1] + j) * n_[2] + k; }
+
+  double h_ = 0.;
+  std::array<double, 3> origin_ = { 0., 0., 0. };
+  std::array<int, 3> n_ = { 0, 0, 0 };
+  std::vector<unsigned char> state_, depth_;
+};
+
+} // namespace internal
+} // namespace Lattice_mesher_3
+} // namespace CGAL
+
+#endif // CGAL_LATTICE_MESHER_3_INTERNAL_SURFACE_CELL_GRID_H
