@@ -224,14 +224,6 @@ inline double shortest_squared_edge(const Eigen::Vector3d& a, const Eigen::Vecto
                       (d - b).squaredNorm(), (d - c).squaredNorm() });
 }
 
-// Both at once, sharing the face area vectors (the hot loop of smooth_vertices()).
-inline std::pair<double, double> smallest_dihedral_angle_and_radius_ratio(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                                                          const Eigen::Vector3d& c, const Eigen::Vector3d& d)
-{
-  const std::array<Eigen::Vector3d, 4> n = face_area_vectors(a, b, c, d);
-  return { smallest_angle_of_faces(n), radius_ratio_of_faces(n, b - a, c - a, d - a, shortest_squared_edge(a, b, c, d)) };
-}
-
 } // namespace internal
 
 /*!

@@ -156,21 +156,29 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
   // good tetrahedra falling towards it costs more than it gains (max-min smoothing made more
   // tetrahedra below 40 degrees than it fixed). `worst` is the star's smallest angle.
   // `bound`: a candidate whose penalty exceeds it cannot win, and is abandoned early.
+  // The orientation tests come last: most candidates lose on the penalty first, and an
+  // inverted tetrahedron rejects the candidate whatever its penalty.
   struct Score { double penalty, worst; };
   auto star_quality = [&](std::vector<Star_tet>& st, const Point_3& at, double bound) {
     Score s{ 0., 180. };
     for(Star_tet& e : st) {
-      e.p[e.k] = at;
-      if(CGAL::orientation(e.p[0], e.p[1], e.p[2], e.p[3]) != CGAL::POSITIVE) return Score{ HUGE_VAL, -1. };
       e.mapped[e.k] = maps[e.t] * internal::to_eigen(at);
-      const std::pair<double, double> q =   // angle, radius ratio
-          internal::smallest_dihedral_angle_and_radius_ratio(e.mapped[0], e.mapped[1], e.mapped[2], e.mapped[3]);
-      s.worst = (std::min)(s.worst, q.first);
-      e.penalty = CGAL::square((std::max)(0., o.target_angle - q.first))
-                + o.worst_weight * CGAL::square((std::max)(0., o.worst_angle - q.first))
-                + CGAL::square(o.radius_ratio_weight * (std::max)(0., o.target_radius_ratio - q.second));
+      const std::array<Eigen::Vector3d, 4> n = internal::face_area_vectors(e.mapped[0], e.mapped[1], e.mapped[2], e.mapped[3]);
+      const double angle = internal::smallest_angle_of_faces(n);
+      s.worst = (std::min)(s.worst, angle);
+      e.penalty = CGAL::square((std::max)(0., o.target_angle - angle))
+                + o.worst_weight * CGAL::square((std::max)(0., o.worst_angle - angle));
+      // the radius ratio's term only adds: a candidate already lost is not measured further
+      if(s.penalty + e.penalty > bound) return Score{ HUGE_VAL, -1. };
+      const double rho = internal::radius_ratio_of_faces(n, e.mapped[1] - e.mapped[0], e.mapped[2] - e.mapped[0], e.mapped[3] - e.mapped[0],
+                                                         internal::shortest_squared_edge(e.mapped[0], e.mapped[1], e.mapped[2], e.mapped[3]));
+      e.penalty += CGAL::square(o.radius_ratio_weight * (std::max)(0., o.target_radius_ratio - rho));
       s.penalty += e.penalty;
       if(s.penalty > bound) return Score{ HUGE_VAL, -1. };
+    }
+    for(Star_tet& e : st) {
+      e.p[e.k] = at;
+      if(CGAL::orientation(e.p[0], e.p[1], e.p[2], e.p[3]) != CGAL::POSITIVE) return Score{ HUGE_VAL, -1. };
     }
     return s;
   };
