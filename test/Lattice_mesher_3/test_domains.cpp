@@ -282,33 +282,42 @@ TEST(PolyhedralDomain, ConcurrentQueries)
 
 // The cell grid's answers against a ray cast and the closest point: the same inside test, a
 // distance bound never above the distance and positive for most points well inside. Points are
-// drawn near the surface too (projections moved along the normal), where the cells are touched.
+// drawn near the surface too (projections moved along the normal), where the cells are touched,
+// and on the planes of the box; the cube's faces lie on its bounding box, its corners touch the
+// cells next to it (the flood fill of the outside once started from such a cell: every untouched
+// cell was inside).
 TEST(PolyhedralDomain, CellGridAgreesWithRayCastAndProjection)
 {
-  const Polyhedral_domain d = LM::read_polyhedral_lattice_domain_3<K>(
-      std::string(LATTICE_MESHER_3_DATA_DIR) + "/meshes/fandisk.off");
-  const CGAL::Side_of_triangle_mesh<Polyhedral_domain::Surface_mesh, K> ray_cast(d.surface());
-  const CGAL::Bbox_3 b = d.bbox();
-  const double extent = (std::max)({ b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin() });
-  CGAL::Random rng(5);
-  int deep = 0, bounded = 0;
-  for(int i = 0; i < 20000; ++i) {
-    Point_3 p(rng.get_double(b.xmin() - .1, b.xmax() + .1), rng.get_double(b.ymin() - .1, b.ymax() + .1),
-              rng.get_double(b.zmin() - .1, b.zmax() + .1));
-    if(i % 2) {   // within a few cells of the surface, either side
-      const auto s = d.project_on_surface(p);
-      p = s.point + rng.get_double(-.05, .05) * extent * s.direction;
+  auto check = [](const Polyhedral_domain& d, const char* name) {
+    const CGAL::Side_of_triangle_mesh<Polyhedral_domain::Surface_mesh, K> ray_cast(d.surface());
+    const CGAL::Bbox_3 b = d.bbox();
+    const double extent = (std::max)({ b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin() });
+    CGAL::Random rng(5);
+    int deep = 0, bounded = 0;
+    for(int i = 0; i < 20000; ++i) {
+      double c[3];
+      for(int a = 0; a < 3; ++a) {
+        const double lo = a == 0 ? b.xmin() : a == 1 ? b.ymin() : b.zmin(), hi = a == 0 ? b.xmax() : a == 1 ? b.ymax() : b.zmax();
+        c[a] = rng.get_int(0, 10) == 0 ? (rng.get_int(0, 2) ? lo : hi) : rng.get_double(lo - .1 * extent, hi + .1 * extent);
+      }
+      Point_3 p(c[0], c[1], c[2]);
+      if(i % 2) {   // within a few cells of the surface, either side
+        const auto s = d.project_on_surface(p);
+        p = s.point + rng.get_double(-.05, .05) * extent * s.direction;
+      }
+      const bool inside = ray_cast(p) == CGAL::ON_BOUNDED_SIDE;
+      ASSERT_EQ(d.is_inside(p), inside) << name << " at " << p;
+      const double bound = d.inside_distance_bound(p), distance = std::sqrt(d.project_on_surface(p).squared_distance);
+      if(!inside) { EXPECT_EQ(bound, 0.) << name << " at " << p; continue; }
+      EXPECT_LE(bound, distance) << name << " at " << p;
+      if(distance > .03 * extent) { ++deep; bounded += (bound >= .5 * distance - .02 * extent); }
     }
-    const bool inside = ray_cast(p) == CGAL::ON_BOUNDED_SIDE;
-    ASSERT_EQ(d.is_inside(p), inside) << "at " << p;
-    const double bound = d.inside_distance_bound(p), distance = std::sqrt(d.project_on_surface(p).squared_distance);
-    if(!inside) { EXPECT_EQ(bound, 0.) << "at " << p; continue; }
-    EXPECT_LE(bound, distance) << "at " << p;
-    if(distance > .03 * extent) { ++deep; bounded += (bound >= .5 * distance - .02 * extent); }
-  }
-  EXPECT_GT(deep, 500);   // fandisk is thin: about one point in 20
-  EXPECT_GT(bounded, .95 * deep);   // 128 cells along the longest side: within 2 cells of the distance
-  EXPECT_EQ(d.inside_distance_bound(Point_3(std::nan(""), 0., 0.)), 0.);
+    EXPECT_GT(deep, 500) << name;   // fandisk is thin: about one point in 20
+    EXPECT_GT(bounded, .95 * deep) << name;   // 128 cells along the longest side: within 2 cells of the distance
+    EXPECT_EQ(d.inside_distance_bound(Point_3(std::nan(""), 0., 0.)), 0.) << name;
+  };
+  check(LM::read_polyhedral_lattice_domain_3<K>(std::string(LATTICE_MESHER_3_DATA_DIR) + "/meshes/fandisk.off"), "fandisk");
+  check(Polyhedral_domain(LM::make_cube_surface_3<K>(1., 11.)), "cube");
 }
 
 // OFF files may list vertices that no face uses (prim.off in CGAL's data): the domain drops them,

@@ -42,10 +42,12 @@ public:
     const double extent = (std::max)({ box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin() });
     if(!(extent > 0.) || !std::isfinite(extent)) return;   // no grid: every query answers "unknown"
     h_ = extent / resolution;
-    // one cell of padding on each side: the flood fill starts outside the surface
-    origin_ = { box.xmin() - h_, box.ymin() - h_, box.zmin() - h_ };
+    // two cells of padding on each side: the outer layer of cells is at least h from the box,
+    // untouched even where the surface lies on the box (a cube's faces and corners touch the
+    // first layer), and the flood fill starts from it
+    origin_ = { box.xmin() - 2. * h_, box.ymin() - 2. * h_, box.zmin() - 2. * h_ };
     const std::array<double, 3> size = { box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin() };
-    for(int a = 0; a < 3; ++a) n_[a] = int(std::ceil(size[a] / h_)) + 3;
+    for(int a = 0; a < 3; ++a) n_[a] = int(std::ceil(size[a] / h_)) + 5;
     state_.assign(std::size_t(n_[0]) * n_[1] * n_[2], UNKNOWN);
     depth_.assign(state_.size(), 0);
 
@@ -66,14 +68,18 @@ public:
             if(CGAL::do_intersect(t, cell)) s = TOUCHED;
           }
     }
-    // outside: untouched cells face-connected to the padding
+    // outside: untouched cells face-connected to the outer layer
     std::deque<std::array<int, 3> > queue;
     auto visit = [&](int i, int j, int k, unsigned char from, unsigned char to) {
       if(i < 0 || j < 0 || k < 0 || i >= n_[0] || j >= n_[1] || k >= n_[2]) return;
       unsigned char& s = state_[index(i, j, k)];
       if(s == from) { s = to; queue.push_back({ i, j, k }); }
     };
-    visit(0, 0, 0, UNKNOWN, OUTSIDE);
+    for(int i = 0; i < n_[0]; ++i)
+      for(int j = 0; j < n_[1]; ++j)
+        for(int k = 0; k < n_[2]; ++k)
+          if(i == 0 || j == 0 || k == 0 || i == n_[0] - 1 || j == n_[1] - 1 || k == n_[2] - 1)
+            visit(i, j, k, UNKNOWN, OUTSIDE);
     while(!queue.empty()) {
       const std::array<int, 3> c = queue.front();
       queue.pop_front();
