@@ -35,7 +35,7 @@ class Surface_cell_grid_3
 public:
   Surface_cell_grid_3() = default;
 
-  // `triangles`: a range of K::Triangle_3 (or anything with vertex(0..2) and a bbox())
+  // `triangles`: a range of K::Triangle_3
   template <typename TriangleRange>
   Surface_cell_grid_3(const CGAL::Bbox_3& box, const TriangleRange& triangles, int resolution = 128)
   {
@@ -70,16 +70,16 @@ public:
     }
     // outside: untouched cells face-connected to the outer layer
     std::deque<std::array<int, 3> > queue;
-    auto visit = [&](int i, int j, int k, unsigned char from, unsigned char to) {
-      if(i < 0 || j < 0 || k < 0 || i >= n_[0] || j >= n_[1] || k >= n_[2]) return;
+    auto visit = [&](int i, int j, int k) {
+      if(!on_grid(i, j, k)) return;
       unsigned char& s = state_[index(i, j, k)];
-      if(s == from) { s = to; queue.push_back({ i, j, k }); }
+      if(s == UNKNOWN) { s = OUTSIDE; queue.push_back({ i, j, k }); }
     };
     for(int i = 0; i < n_[0]; ++i)
       for(int j = 0; j < n_[1]; ++j)
         for(int k = 0; k < n_[2]; ++k)
           if(i == 0 || j == 0 || k == 0 || i == n_[0] - 1 || j == n_[1] - 1 || k == n_[2] - 1)
-            visit(i, j, k, UNKNOWN, OUTSIDE);
+            visit(i, j, k);
     while(!queue.empty()) {
       const std::array<int, 3> c = queue.front();
       queue.pop_front();
@@ -87,18 +87,16 @@ public:
         for(int d : { -1, 1 }) {
           std::array<int, 3> q = c;
           q[a] += d;
-          visit(q[0], q[1], q[2], UNKNOWN, OUTSIDE);
+          visit(q[0], q[1], q[2]);
         }
     }
     // inside: the rest; depth by a breadth-first search from the touched cells over the 26
-    // neighbours (Chebyshev distance), saturated at 255
+    // neighbours (Chebyshev distance), saturated at 255; an inside cell of depth 0 is unvisited
     for(unsigned char& s : state_) if(s == UNKNOWN) s = INSIDE;
     for(int i = 0; i < n_[0]; ++i)
       for(int j = 0; j < n_[1]; ++j)
         for(int k = 0; k < n_[2]; ++k)
           if(state_[index(i, j, k)] == TOUCHED) queue.push_back({ i, j, k });
-    std::vector<char> done(state_.size(), 0);
-    for(const std::array<int, 3>& c : queue) done[index(c[0], c[1], c[2])] = 1;
     while(!queue.empty()) {
       const std::array<int, 3> c = queue.front();
       queue.pop_front();
@@ -107,10 +105,9 @@ public:
         for(int dj = -1; dj <= 1; ++dj)
           for(int dk = -1; dk <= 1; ++dk) {
             const int i = c[0] + di, j = c[1] + dj, k = c[2] + dk;
-            if(i < 0 || j < 0 || k < 0 || i >= n_[0] || j >= n_[1] || k >= n_[2]) continue;
+            if(!on_grid(i, j, k)) continue;
             const std::size_t q = index(i, j, k);
-            if(done[q] || state_[q] != INSIDE) continue;
-            done[q] = 1;
+            if(state_[q] != INSIDE || depth_[q] != 0) continue;
             depth_[q] = next;
             queue.push_back({ i, j, k });
           }
@@ -121,26 +118,33 @@ public:
   // a non-finite point)
   int side(double x, double y, double z) const
   {
-    if(state_.empty() || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) return 0;
-    const std::array<int, 3> c = cell_of(x, y, z);
-    if(c[0] < 0 || c[1] < 0 || c[2] < 0 || c[0] >= n_[0] || c[1] >= n_[1] || c[2] >= n_[2]) return -1;
-    switch(state_[index(c[0], c[1], c[2])]) {
-      case INSIDE: return 1;
-      case OUTSIDE: return -1;
-      default: return 0;
-    }
+    const std::ptrdiff_t c = locate(x, y, z);
+    if(c < 0) return c == OFF_GRID ? -1 : 0;
+    return state_[c] == INSIDE ? 1 : state_[c] == OUTSIDE ? -1 : 0;
   }
 
   // a lower bound of the distance to the surface of a point inside; 0 if not known inside
   double inside_distance_bound(double x, double y, double z) const
   {
-    if(side(x, y, z) != 1) return 0.;
-    const std::array<int, 3> c = cell_of(x, y, z);
-    return (std::max)(int(depth_[index(c[0], c[1], c[2])]) - 1, 0) * h_;
+    const std::ptrdiff_t c = locate(x, y, z);
+    if(c < 0 || state_[c] != INSIDE) return 0.;
+    return (std::max)(int(depth_[c]) - 1, 0) * h_;
   }
 
 private:
   enum : unsigned char { UNKNOWN = 0, TOUCHED, OUTSIDE, INSIDE };
+  static constexpr std::ptrdiff_t OFF_GRID = -1, NO_CELL = -2;
+
+  // the index of the cell of (x, y, z): OFF_GRID (outside the padded box), NO_CELL (no grid,
+  // a non-finite point)
+  std::ptrdiff_t locate(double x, double y, double z) const
+  {
+    if(state_.empty() || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) return NO_CELL;
+    const std::array<int, 3> c = cell_of(x, y, z);
+    return on_grid(c[0], c[1], c[2]) ? std::ptrdiff_t(index(c[0], c[1], c[2])) : OFF_GRID;
+  }
+  bool on_grid(int i, int j, int k) const
+  { return i >= 0 && j >= 0 && k >= 0 && i < n_[0] && j < n_[1] && k < n_[2]; }
 
   std::array<int, 3> cell_of(double x, double y, double z) const
   {
