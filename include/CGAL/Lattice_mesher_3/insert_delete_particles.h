@@ -253,17 +253,19 @@ std::size_t insert_particles(Particle_set_3<Point_3>& ps, const Domain& domain, 
 /*!
 \ingroup PkgLatticeMesher3InsertionDeletion
 
-Coarse-to-fine refinement: adds p + T(p) l* (+-t_m) for every particle and frame axis m, where
-l* = `o.edge_length` is the new (finer) edge length, dropping candidates that coincide (within
-0.1 l*) with a particle or an earlier candidate. Returns the number added.
+Coarse-to-fine refinement: the insertion of `insert_particles()` at the new (finer) edge length
+l* = `o.edge_length`, every particle p adding its one-ring p + T(p) l* O_k. From a lattice of edge
+2 l*, these are the points of the lattice of edge l*. The paper adds p +- l* T(p) t_m along the
+frame axes instead, which gives only the simple cubic part of the finer lattice (half of BCC's
+points, a quarter of FCC's), the rest being inserted after another round at l*: fandisk BCC,
+18,000 vertices: 13,937 particles after the refinement, 5,358 inserted after the first round at
+l*, optimization 10.2 s; with the one-ring 16,561 and 731, 7.1 s. Returns the number added.
 */
 template <typename Domain, typename FrameField, typename Point_3>
 std::size_t refine_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
                              const Lattice_3& lattice, const Optimization_options& o)
 {
-  std::vector<Eigen::Vector3d> axes;
-  internal::add_axis_offsets(axes);
-  return internal::insert_candidates(ps, domain, field, lattice, axes, 0.1 * o.edge_length, o);
+  return insert_particles(ps, domain, field, lattice, o);
 }
 
 /*!
