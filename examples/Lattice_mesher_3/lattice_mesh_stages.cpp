@@ -77,7 +77,7 @@ int main()
     //    then deletion and insertion, until neither changes anything.
     for(int level = coarse_levels; level >= 0; --level) {
       options.edge_length = std::ldexp(edge_length, level);
-      // Refinement: every particle p adds p +- l T(p) e_m along the three frame axes.
+      // Refinement: every particle adds its lattice one-ring at the finer edge length.
       if(level < coarse_levels)
         LM::refine_particles(particles, domain, field, lattice, options);
 

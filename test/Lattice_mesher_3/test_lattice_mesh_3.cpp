@@ -165,6 +165,54 @@ TEST(Lattice_mesh_3, SurfaceMeshOverloadTakesTheFeatureAngle)
   EXPECT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
 }
 
+// Refinement turns a lattice of edge 2l into the lattice of edge l: for BCC and FCC, every point
+// of the finer lattice 2l away from the boundary is there once, and nothing else is (steps along
+// the axes alone would give only its simple cubic part: half of BCC's points, a quarter of FCC's).
+TEST(Lattice_mesh_3, RefinementGivesTheLatticeOfHalfTheEdge)
+{
+  const Field field;
+  for(const LM::Lattice_3& lattice : { LM::bcc_lattice(), LM::fcc_lattice() }) {
+    // the lattice of edge l on the cube [0.1, 1.1]^3: cube corners and the one-ring's other sites
+    auto lattice_points = [&](double l) {
+      std::vector<Point_3> out;
+      std::vector<Eigen::Vector3d> sites = { Eigen::Vector3d::Zero() };
+      for(const Eigen::Vector3d& o : lattice.one_ring)
+        if(o.minCoeff() >= 0. && o.maxCoeff() < 1.) sites.push_back(o);   // (1/2, 1/2, 1/2), (1/2, 1/2, 0), ...
+      const int n = int(std::lround(1. / l));
+      for(int i = 0; i <= n; ++i) for(int j = 0; j <= n; ++j) for(int k = 0; k <= n; ++k)
+        for(const Eigen::Vector3d& s : sites) {
+          const Eigen::Vector3d q = Eigen::Vector3d(0.1, 0.1, 0.1) + l * (Eigen::Vector3d(i, j, k) + s);
+          if(q.maxCoeff() < 1.1 - 1e-9) out.emplace_back(q[0], q[1], q[2]);
+        }
+      return out;
+    };
+    const double l = 0.125;
+    LM::Particle_set_3<Point_3> ps;
+    // points at least `depth` inside the cube
+    auto inside = [](const Point_3& p, double depth) {
+      return std::min({ p.x(), p.y(), p.z() }) > 0.1 + depth - 1e-9 && std::max({ p.x(), p.y(), p.z() }) < 1.1 - depth + 1e-9;
+    };
+    for(const Point_3& p : lattice_points(2. * l))
+      if(inside(p, 1e-6)) ps.push_back(p, LM::Particle_kind::FREE);   // the coarse lattice's interior points
+    LM::Optimization_options o;
+    o.edge_length = l;
+    EXPECT_GT(LM::refine_particles(ps, cube(), field, lattice, o), 0u);
+    auto deep = [&](const Point_3& p) { return inside(p, 2. * l); };
+    std::size_t expected = 0, found_once = 0, particles_deep = 0;
+    for(const Point_3& q : lattice_points(l)) {
+      if(!deep(q)) continue;
+      ++expected;
+      std::size_t near = 0;
+      for(const Point_3& p : ps.points) near += CGAL::squared_distance(p, q) < CGAL::square(0.1 * l);
+      found_once += near == 1;
+    }
+    for(const Point_3& p : ps.points) particles_deep += deep(p);
+    EXPECT_GT(expected, 100u) << lattice.name;
+    EXPECT_EQ(found_once, expected) << lattice.name;
+    EXPECT_EQ(particles_deep, expected) << lattice.name;
+  }
+}
+
 // Every stage is a function with named parameters, usable on its own.
 TEST(Lattice_mesh_3, StagesAsNamedParameterFunctions)
 {
