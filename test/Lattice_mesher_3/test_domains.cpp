@@ -296,10 +296,9 @@ TEST(PolyhedralDomain, CellGridAgreesWithRayCastAndProjection)
     int deep = 0, bounded = 0;
     for(int i = 0; i < 20000; ++i) {
       double c[3];
-      for(int a = 0; a < 3; ++a) {
-        const double lo = a == 0 ? b.xmin() : a == 1 ? b.ymin() : b.zmin(), hi = a == 0 ? b.xmax() : a == 1 ? b.ymax() : b.zmax();
-        c[a] = rng.get_int(0, 10) == 0 ? (rng.get_int(0, 2) ? lo : hi) : rng.get_double(lo - .1 * extent, hi + .1 * extent);
-      }
+      for(int a = 0; a < 3; ++a)
+        c[a] = rng.get_int(0, 10) == 0 ? (rng.get_int(0, 2) ? b.min_coord(a) : b.max_coord(a))
+                                       : rng.get_double(b.min_coord(a) - .1 * extent, b.max_coord(a) + .1 * extent);
       Point_3 p(c[0], c[1], c[2]);
       if(i % 2) {   // within a few cells of the surface, either side
         const auto s = d.project_on_surface(p);

@@ -22,6 +22,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_helpers.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -443,33 +445,6 @@ INSTANTIATE_TEST_SUITE_P(All, Paper_field_energy,
 
 // ---------------------------------------------------------------------------------------------
 // The perfect lattice
-
-// A block of cells^3 lattice cubes in the isotropic space, and which of its points are at least
-// `margin` away from the block's faces (their whole interaction range lies in the block).
-struct Lattice_block
-{
-  std::vector<Vec3> u;
-  std::vector<bool> central;
-};
-
-Lattice_block lattice_block(const LM::Lattice_3& l, int cells, double margin)
-{
-  // the points of one cube: the one-ring offsets folded into [0, 1)^3 (the origin included)
-  std::vector<Vec3> basis;
-  for(const Vec3& o : l.one_ring) {
-    const Vec3 b = o.cwiseAbs().unaryExpr([](double c) { return c - std::floor(c); });
-    if(std::find(basis.begin(), basis.end(), b) == basis.end()) basis.push_back(b);
-  }
-  Lattice_block block;
-  for(int i = 0; i <= cells; ++i) for(int j = 0; j <= cells; ++j) for(int k = 0; k <= cells; ++k)
-    for(const Vec3& b : basis) {
-      const Vec3 u = Vec3(i, j, k) + b;
-      if(u.maxCoeff() > cells) continue;
-      block.u.push_back(u);
-      block.central.push_back(u.minCoeff() >= margin && u.maxCoeff() <= cells - margin);
-    }
-  return block;
-}
 
 // Under fig8 the isotropic coordinates exist, u = (U(x), y, z) with U' = b = 1 / (1.0125 -
 // exp(-|x - 0.6|)), and their lattice is what the optimizer should find. With each pair's B

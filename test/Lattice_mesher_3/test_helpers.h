@@ -10,8 +10,13 @@
 #ifndef CGAL_LATTICE_MESHER_3_TEST_HELPERS_H
 #define CGAL_LATTICE_MESHER_3_TEST_HELPERS_H
 
+#include <CGAL/Lattice_mesher_3/Lattice_3.h>
+
+#include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -65,5 +70,32 @@ public:
 private:
   std::filesystem::path dir_;
 };
+
+// A block of cells^3 lattice cubes in the isotropic space, and which of its points are at least
+// `margin` away from the block's faces (their whole interaction range lies in the block).
+struct Lattice_block
+{
+  std::vector<Eigen::Vector3d> u;
+  std::vector<bool> central;
+};
+
+inline Lattice_block lattice_block(const CGAL::Lattice_mesher_3::Lattice_3& l, int cells, double margin)
+{
+  // the points of one cube: the one-ring offsets folded into [0, 1)^3 (the origin included)
+  std::vector<Eigen::Vector3d> basis;
+  for(const Eigen::Vector3d& o : l.one_ring) {
+    const Eigen::Vector3d b = o.cwiseAbs().unaryExpr([](double c) { return c - std::floor(c); });
+    if(std::find(basis.begin(), basis.end(), b) == basis.end()) basis.push_back(b);
+  }
+  Lattice_block block;
+  for(int i = 0; i <= cells; ++i) for(int j = 0; j <= cells; ++j) for(int k = 0; k <= cells; ++k)
+    for(const Eigen::Vector3d& b : basis) {
+      const Eigen::Vector3d u = Eigen::Vector3d(i, j, k) + b;
+      if(u.maxCoeff() > cells) continue;
+      block.u.push_back(u);
+      block.central.push_back(u.minCoeff() >= margin && u.maxCoeff() <= cells - margin);
+    }
+  return block;
+}
 
 #endif // CGAL_LATTICE_MESHER_3_TEST_HELPERS_H

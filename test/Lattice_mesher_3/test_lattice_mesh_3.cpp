@@ -171,42 +171,28 @@ TEST(Lattice_mesh_3, SurfaceMeshOverloadTakesTheFeatureAngle)
 TEST(Lattice_mesh_3, RefinementGivesTheLatticeOfHalfTheEdge)
 {
   const Field field;
+  const double l = 0.125;   // the cube [0.1, 1.1]^3: 4 cells of the coarse lattice, 8 of the fine one
+  auto point = [](const Eigen::Vector3d& u, double edge) { return Point_3(0.1 + edge * u[0], 0.1 + edge * u[1], 0.1 + edge * u[2]); };
   for(const LM::Lattice_3& lattice : { LM::bcc_lattice(), LM::fcc_lattice() }) {
-    // the lattice of edge l on the cube [0.1, 1.1]^3: cube corners and the one-ring's other sites
-    auto lattice_points = [&](double l) {
-      std::vector<Point_3> out;
-      std::vector<Eigen::Vector3d> sites = { Eigen::Vector3d::Zero() };
-      for(const Eigen::Vector3d& o : lattice.one_ring)
-        if(o.minCoeff() >= 0. && o.maxCoeff() < 1.) sites.push_back(o);   // (1/2, 1/2, 1/2), (1/2, 1/2, 0), ...
-      const int n = int(std::lround(1. / l));
-      for(int i = 0; i <= n; ++i) for(int j = 0; j <= n; ++j) for(int k = 0; k <= n; ++k)
-        for(const Eigen::Vector3d& s : sites) {
-          const Eigen::Vector3d q = Eigen::Vector3d(0.1, 0.1, 0.1) + l * (Eigen::Vector3d(i, j, k) + s);
-          if(q.maxCoeff() < 1.1 - 1e-9) out.emplace_back(q[0], q[1], q[2]);
-        }
-      return out;
-    };
-    const double l = 0.125;
     LM::Particle_set_3<Point_3> ps;
-    // points at least `depth` inside the cube
-    auto inside = [](const Point_3& p, double depth) {
-      return std::min({ p.x(), p.y(), p.z() }) > 0.1 + depth - 1e-9 && std::max({ p.x(), p.y(), p.z() }) < 1.1 - depth + 1e-9;
-    };
-    for(const Point_3& p : lattice_points(2. * l))
-      if(inside(p, 1e-6)) ps.push_back(p, LM::Particle_kind::FREE);   // the coarse lattice's interior points
+    const Lattice_block coarse = lattice_block(lattice, 4, 1e-6);   // its interior points
+    for(std::size_t i = 0; i < coarse.u.size(); ++i)
+      if(coarse.central[i]) ps.push_back(point(coarse.u[i], 2. * l), LM::Particle_kind::FREE);
     LM::Optimization_options o;
     o.edge_length = l;
     EXPECT_GT(LM::refine_particles(ps, cube(), field, lattice, o), 0u);
-    auto deep = [&](const Point_3& p) { return inside(p, 2. * l); };
+    const Lattice_block fine = lattice_block(lattice, 8, 2.);   // central: 2l inside
     std::size_t expected = 0, found_once = 0, particles_deep = 0;
-    for(const Point_3& q : lattice_points(l)) {
-      if(!deep(q)) continue;
+    for(std::size_t i = 0; i < fine.u.size(); ++i) {
+      if(!fine.central[i]) continue;
       ++expected;
+      const Point_3 q = point(fine.u[i], l);
       std::size_t near = 0;
       for(const Point_3& p : ps.points) near += CGAL::squared_distance(p, q) < CGAL::square(0.1 * l);
       found_once += near == 1;
     }
-    for(const Point_3& p : ps.points) particles_deep += deep(p);
+    for(const Point_3& p : ps.points)
+      particles_deep += std::min({ p.x(), p.y(), p.z() }) > 0.1 + 2. * l - 1e-9 && std::max({ p.x(), p.y(), p.z() }) < 1.1 - 2. * l + 1e-9;
     EXPECT_GT(expected, 100u) << lattice.name;
     EXPECT_EQ(found_once, expected) << lattice.name;
     EXPECT_EQ(particles_deep, expected) << lattice.name;

@@ -257,10 +257,8 @@ Coarse-to-fine refinement: the insertion of `insert_particles()` at the new (fin
 l* = `o.edge_length`, every particle p adding its one-ring p + T(p) l* O_k. From a lattice of edge
 2 l*, these are the points of the lattice of edge l*. The paper adds p +- l* T(p) t_m along the
 frame axes instead, which gives only the simple cubic part of the finer lattice (half of BCC's
-points, a quarter of FCC's), the rest being inserted after another round at l*: fandisk BCC,
-18,000 vertices: 13,937 particles after the refinement and 5,358 inserted after the first round
-at l*; with the one-ring 16,561 and 731 (optimization 7.6 -> 6.5 s; 127 -> 81 tetrahedra below
-40 degrees in the end, mean smallest angle 57.47 -> 57.29). Returns the number added.
+points, a quarter of FCC's), the rest being inserted only after another round at l* (fandisk
+BCC, 18,000 vertices: 5,358 then, 731 now). Returns the number added.
 */
 template <typename Domain, typename FrameField, typename Point_3>
 std::size_t refine_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,

@@ -39,15 +39,17 @@ public:
   template <typename TriangleRange>
   Surface_cell_grid_3(const CGAL::Bbox_3& box, const TriangleRange& triangles, int resolution = 128)
   {
-    const double extent = (std::max)({ box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin() });
+    const std::array<double, 3> size = { box.x_span(), box.y_span(), box.z_span() };
+    const double extent = (std::max)({ size[0], size[1], size[2] });
     if(!(extent > 0.) || !std::isfinite(extent)) return;   // no grid: every query answers "unknown"
     h_ = extent / resolution;
     // two cells of padding on each side: the outer layer of cells is at least h from the box,
     // untouched even where the surface lies on the box (a cube's faces and corners touch the
     // first layer), and the flood fill starts from it
-    origin_ = { box.xmin() - 2. * h_, box.ymin() - 2. * h_, box.zmin() - 2. * h_ };
-    const std::array<double, 3> size = { box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin() };
-    for(int a = 0; a < 3; ++a) n_[a] = int(std::ceil(size[a] / h_)) + 5;
+    for(int a = 0; a < 3; ++a) {
+      origin_[a] = box.min_coord(a) - 2. * h_;
+      n_[a] = int(std::ceil(size[a] / h_)) + 5;
+    }
     state_.assign(std::size_t(n_[0]) * n_[1] * n_[2], UNKNOWN);
     depth_.assign(state_.size(), 0);
 
