@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -85,7 +86,7 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
 
   // The star of b after a is merged into it, as corners with b's slot marked: the cones over
   // a's link, and b's own tetrahedra but those around the edge.
-  struct Star_tet { Corners p; int k; };
+  struct Star_tet { Corners p; int k; double angle; };
   struct Score { double worst; int below; };
   auto merged_star = [&](int a, int b, std::vector<Star_tet>& out) {
     out.clear();
@@ -93,34 +94,43 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
       for(int s : star[v]) {
         const std::array<int, 4>& t = mesh.tets[s];
         if(contains(t, v == a ? b : a)) continue;
-        Star_tet e{ corners(t), int(std::find(t.begin(), t.end(), v) - t.begin()) };
+        Star_tet e{ corners(t), int(std::find(t.begin(), t.end(), v) - t.begin()), 0. };
         out.push_back(e);
       }
   };
+  auto better = [](const Score& x, const Score& y) { return x.worst > y.worst + 1e-9; };
   // smallest angle and count below the floor with b at `at`, or worst -1 if a tetrahedron is
-  // not positive
-  auto score = [&](std::vector<Star_tet>& st, const Point_3& at) {
+  // not positive or, once one angle shows that the star cannot be `better()` than `bound`,
+  // abandoned there: a search of b's place makes ~50 such tries over stars of ~40 tetrahedra,
+  // each evaluating the field (fig9 BCC: contractions took 6.8 of 12.3 s of the mesh stage)
+  auto score = [&](std::vector<Star_tet>& st, const Point_3& at, const Score& bound) {
     Score r{ 180., 0 };
     for(Star_tet& e : st) {
       e.p[e.k] = at;
       if(CGAL::orientation(e.p[0], e.p[1], e.p[2], e.p[3]) != CGAL::POSITIVE) return Score{ -1., 0 };
-      const double x = angle_of(e.p);
-      r.worst = (std::min)(r.worst, x);
-      r.below += x < o.floor_angle;
+      e.angle = angle_of(e.p);
+      if(!better(Score{ e.angle, 0 }, bound)) return Score{ -1., 0 };
+      r.worst = (std::min)(r.worst, e.angle);
+      r.below += e.angle < o.floor_angle;
     }
     return r;
   };
-  auto better = [](const Score& x, const Score& y) { return x.worst > y.worst + 1e-9; };
+  // after an evaluation in full, the worst tetrahedra first: a try that loses usually loses on them
+  auto worst_first = [](std::vector<Star_tet>& st) {
+    std::stable_sort(st.begin(), st.end(), [](const Star_tet& x, const Star_tet& y) { return x.angle < y.angle; });
+  };
+  const Score unbounded{ -HUGE_VAL, 0 };
   // where b goes, and its score
   std::vector<Star_tet> st;
   auto place = [&](int a, int b, Point_3& at) {
     merged_star(a, b, st);
     at = mesh.points[b];
-    Score best = score(st, at);
+    Score best = score(st, at, unbounded);
     if(!interior[b]) return best;
     const Point_3 mid = CGAL::midpoint(mesh.points[a], mesh.points[b]);
-    const Score m = score(st, mid);
-    if(better(m, best)) { best = m; at = mid; }
+    const Score m = score(st, mid, best);
+    if(better(m, best)) best = m, at = mid;
+    else score(st, at, unbounded);   // the angles of the place kept, to order the star by
     const Eigen::Matrix3d map = internal::isotropic_map_at<Point_3>(field, internal::to_eigen(at));
     double mean_edge = 0.;
     for(const Star_tet& e : st)
@@ -128,11 +138,13 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
         if(i != e.k) mean_edge += (map * (internal::to_eigen(e.p[i]) - internal::to_eigen(at))).norm() / (3. * st.size());
     std::vector<Eigen::Vector3d> directions = internal::axis_and_diagonal_directions();
     for(Eigen::Vector3d& d : directions) d /= (map * d).norm();   // unit isotropic length
+    worst_first(st);
     internal::pattern_search(internal::to_eigen(at), directions, mean_edge, [&](const Eigen::Vector3d& y, Eigen::Vector3d& x) {
       const Point_3 candidate(y[0], y[1], y[2]);
-      const Score c = score(st, candidate);
+      const Score c = score(st, candidate, best);
       if(!better(c, best)) return false;
       best = c; at = candidate; x = y;
+      worst_first(st);
       return true;
     });
     return best;
