@@ -49,6 +49,17 @@ public:
     return argv_[++i_];
   }
   double number(const std::string& a) { return to_number(a, value(a)); }
+  /// a whole number in [lo, hi]: a count or a seed given as 2.5 or -1 is a mistake, not a
+  /// value to round or wrap
+  long long integer(const std::string& a, long long lo, long long hi)
+  {
+    const std::string v = value(a);
+    const double x = to_number(a, v);
+    if(x != std::floor(x) || x < double(lo) || x > double(hi))
+      throw std::invalid_argument(a + " expects a whole number from " + std::to_string(lo) + " to " +
+                                  std::to_string(hi) + ", got '" + v + "'");
+    return static_cast<long long>(x);
+  }
   /// `a` is no known option: the input file if there is none yet
   static void positional(const std::string& a, std::string& input)
   {

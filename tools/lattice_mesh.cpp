@@ -28,6 +28,7 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -98,16 +99,16 @@ static Options parse(int argc, char** argv)
     else if(a == "--write-field") o.write_field = args.value(a);
     else if(a == "--field-spacing") o.field_spacing = args.number(a);
     else if(a == "--feature-angle") o.feature_angle = args.number(a);
-    else if(a == "--seed") o.seed = (unsigned int)args.number(a);
-    else if(a == "--threads") o.threads = int(args.number(a));
-    else if(a == "--coarse-levels") o.coarse_levels = int(args.number(a));
-    else if(a == "--max-rounds") o.max_rounds = int(args.number(a));
+    else if(a == "--seed") o.seed = (unsigned int)args.integer(a, 0, std::numeric_limits<unsigned int>::max());
+    else if(a == "--threads") o.threads = int(args.integer(a, 1, 1024));
+    else if(a == "--coarse-levels") o.coarse_levels = int(args.integer(a, -1, 4));
+    else if(a == "--max-rounds") o.max_rounds = int(args.integer(a, -1, std::numeric_limits<int>::max()));
     else if(a == "-o" || a == "--output") o.out = args.value(a);
     else if(a == "--vtu") o.vtu = args.value(a);
     else if(a == "--stats") o.stats = args.value(a);
     else if(a == "--quiet") o.quiet = true;
     else if(a == "--no-flips") o.flip = false;
-    else if(a == "--smoothing-rounds") o.smoothing_rounds = int(args.number(a));
+    else if(a == "--smoothing-rounds") o.smoothing_rounds = int(args.integer(a, 0, std::numeric_limits<int>::max()));
     else command_line::Arguments::positional(a, o.input);
   }
   if(o.input.empty() == o.domain.empty())
@@ -125,7 +126,6 @@ static Options parse(int argc, char** argv)
     throw std::invalid_argument("--edge-length must be positive, got " + std::to_string(o.edge_length));
   if(o.vertices != 0. && !(o.vertices >= 4.))
     throw std::invalid_argument("--vertices must be at least 4");
-  if(o.threads < 1) throw std::invalid_argument("--threads must be at least 1");
   LM::lattice_type_from_name(o.lattice);   // validates the name
   return o;
 }

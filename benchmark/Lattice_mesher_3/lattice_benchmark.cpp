@@ -45,6 +45,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -504,8 +505,8 @@ static Options parse(int argc, char** argv)
     else if(a == "--domain") o.domain = args.value(a);
     else if(a == "--method") o.method = args.value(a);
     else if(a == "--vertices") o.vertices = args.number(a);
-    else if(a == "--threads") o.threads = int(args.number(a));
-    else if(a == "--seed") o.seed = (unsigned int)args.number(a);
+    else if(a == "--threads") o.threads = int(args.integer(a, 1, 1024));
+    else if(a == "--seed") o.seed = (unsigned int)args.integer(a, 0, std::numeric_limits<unsigned int>::max());
     else if(a == "--no-tuning") o.tune = false;
     else if(a == "-o" || a == "--output") o.out = args.value(a);
     else if(a == "--stats") o.stats = args.value(a);
@@ -516,7 +517,6 @@ static Options parse(int argc, char** argv)
   if(!o.domain.empty() && o.domain != "cube") throw std::invalid_argument("unknown domain '" + o.domain + "' (expected cube)");
   if(o.method.empty()) throw std::invalid_argument("a method is required: --method bcc|fcc|gaussian|cvt|odt|cvt-pe|odt-pe|tetgen");
   if(!(o.vertices >= 16. && o.vertices <= 1e7)) throw std::invalid_argument("--vertices N is required, with 16 <= N <= 10^7");
-  if(o.threads < 1) throw std::invalid_argument("--threads must be at least 1");
   return o;
 }
 

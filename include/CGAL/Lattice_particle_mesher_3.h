@@ -116,7 +116,16 @@ public:
     if(p.threads < 1) throw std::invalid_argument("Lattice_particle_mesher_3: the number of threads must be at least 1");
     if(p.coarse_levels < -1 || p.coarse_levels > max_coarse_levels)
       throw std::invalid_argument("Lattice_particle_mesher_3: coarse_levels must be -1 (automatic) or in [0, 4]");
-    if(!(p.sigma_ratio > 0.)) throw std::invalid_argument("Lattice_particle_mesher_3: sigma_ratio must be positive");
+    if(!(p.sigma_ratio > 0.) || !std::isfinite(p.sigma_ratio))
+      throw std::invalid_argument("Lattice_particle_mesher_3: sigma_ratio must be positive and finite");
+    if(!(p.neighbor_radius > 0.) || !std::isfinite(p.neighbor_radius))
+      throw std::invalid_argument("Lattice_particle_mesher_3: neighbor_radius must be positive and finite");
+    if(!(p.gradient_tolerance > 0.) || !(p.final_gradient_tolerance > 0.) ||
+       !std::isfinite(p.gradient_tolerance) || !std::isfinite(p.final_gradient_tolerance))
+      throw std::invalid_argument("Lattice_particle_mesher_3: the gradient tolerances must be positive and finite");
+    // negative counts would silently mean the defaults (max_rounds) or nothing (smoothing)
+    if(p.max_rounds < -1) throw std::invalid_argument("Lattice_particle_mesher_3: max_rounds must be -1 (automatic) or at least 0");
+    if(p.smoothing_rounds < 0) throw std::invalid_argument("Lattice_particle_mesher_3: smoothing_rounds must be at least 0");
     const double estimate = lattice_.density * isotropic_volume() / std::pow(p_.edge_length, 3);
     if(!(estimate < max_particles))
     {

@@ -120,6 +120,10 @@ them (`tetrahedralize_particles()`).
 \cgalNamedParamsEnd
 
 \returns the mesh as vertex and tetrahedron arrays (`Lattice_mesher_3::Tetrahedral_mesh_3`).
+\throws std::invalid_argument naming the parameter if one is out of range: a length, ratio or
+tolerance that is not positive and finite, fewer than 1 thread, `coarse_levels` outside [-1, 4],
+`max_rounds` below -1, `number_of_smoothing_rounds` below 0, or an edge length that needs more
+than 5e7 particles
 */
 template <typename MeshDomain, typename FrameField,
           typename NamedParameters = parameters::Default_named_parameters>

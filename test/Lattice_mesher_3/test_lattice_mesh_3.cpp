@@ -20,6 +20,7 @@
 
 #include "test_helpers.h"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <random>
@@ -240,6 +241,13 @@ TEST(Lattice_mesh_3, ClearErrors)
   expect_error([&] { CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(0.)); }, { "edge_length" });
   expect_error([&] { CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(-0.1)); }, { "edge_length" });
   expect_error([&] { CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(1e-5)); }, { "larger edge length" });
+  // counts and tolerances out of range: an error, not the defaults or an endless round
+  const auto l = CGAL::parameters::edge_length(0.2);
+  expect_error([&] { CGAL::lattice_mesh_3(cube(), field, l.max_rounds(-2)); }, { "max_rounds" });
+  expect_error([&] { CGAL::lattice_mesh_3(cube(), field, l.number_of_smoothing_rounds(-1)); }, { "smoothing_rounds" });
+  expect_error([&] { CGAL::lattice_mesh_3(cube(), field, l.neighbor_radius_ratio(0.)); }, { "neighbor_radius" });
+  expect_error([&] { CGAL::lattice_mesh_3(cube(), field, l.gradient_tolerance(-1e-2)); }, { "gradient tolerances" });
+  expect_error([&] { CGAL::lattice_mesh_3(cube(), field, l.sigma_ratio(std::nan(""))); }, { "sigma_ratio" });
 
   Traits::Matrix_3 singular;
   singular << 1, 0, 0, 0, 1, 0, 1, 1, 0;
@@ -285,11 +293,21 @@ TEST(Lattice_mesh_program, WritesOutputsAndRejectsBadInput)
   EXPECT_FALSE(first.empty());
   EXPECT_EQ(first, run_elephant("/lm_e2.mesh"));
 
-  EXPECT_NE(std::system((exe + " /nonexistent/file.off --vertices 100 -o " + out + " 2> " + dir + "/lm_err.txt").c_str()), 0);
-  EXPECT_NE(std::system((exe + " --domain cube --edge-length -1 -o " + out + " 2> " + dir + "/lm_err.txt").c_str()), 0);
-  std::ifstream es(dir + "/lm_err.txt");
-  const std::string err((std::istreambuf_iterator<char>(es)), std::istreambuf_iterator<char>());
+  auto error_of = [&](const std::string& args) {
+    EXPECT_NE(std::system((exe + " " + args + " -o " + out + " 2> " + dir + "/lm_err.txt").c_str()), 0) << args;
+    std::ifstream es(dir + "/lm_err.txt");
+    return std::string((std::istreambuf_iterator<char>(es)), std::istreambuf_iterator<char>());
+  };
+  std::string err = error_of("/nonexistent/file.off --vertices 100");
+  EXPECT_NE(err.find("cannot open"), std::string::npos) << err;
+  err = error_of("--domain cube --edge-length -1");
   EXPECT_NE(err.find("edge-length"), std::string::npos) << err;
+  // counts and seeds are whole numbers in range: 1.5 threads or seed -5 is refused, not rounded or wrapped
+  for(const char* bad : { "--threads 1.5", "--threads 0", "--seed -5", "--max-rounds -2", "--smoothing-rounds -1" }) {
+    err = error_of(std::string("--domain cube --edge-length 0.25 ") + bad);
+    EXPECT_NE(err.find(std::string(bad).substr(0, std::string(bad).find(' '))), std::string::npos) << err;
+    EXPECT_NE(err.find("whole number"), std::string::npos) << err;
+  }
 }
 
 } // namespace
