@@ -101,7 +101,7 @@ static Options parse(int argc, char** argv)
     else if(a == "--feature-angle") o.feature_angle = args.number(a);
     else if(a == "--seed") o.seed = (unsigned int)args.integer(a, 0, std::numeric_limits<unsigned int>::max());
     else if(a == "--threads") o.threads = int(args.integer(a, 1, 1024));
-    else if(a == "--coarse-levels") o.coarse_levels = int(args.integer(a, -1, 4));
+    else if(a == "--coarse-levels") o.coarse_levels = int(args.integer(a, -1, std::numeric_limits<int>::max()));   // the mesher checks the range
     else if(a == "--max-rounds") o.max_rounds = int(args.integer(a, -1, std::numeric_limits<int>::max()));
     else if(a == "-o" || a == "--output") o.out = args.value(a);
     else if(a == "--vtu") o.vtu = args.value(a);

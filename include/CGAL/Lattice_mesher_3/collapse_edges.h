@@ -129,7 +129,7 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
     if(!interior[b]) return best;
     const Point_3 mid = CGAL::midpoint(mesh.points[a], mesh.points[b]);
     const Score m = score(st, mid, best);
-    if(better(m, best)) best = m, at = mid;
+    if(better(m, best)) { best = m; at = mid; }
     else score(st, at, unbounded);   // the angles of the place kept, to order the star by
     const Eigen::Matrix3d map = internal::isotropic_map_at<Point_3>(field, internal::to_eigen(at));
     double mean_edge = 0.;
