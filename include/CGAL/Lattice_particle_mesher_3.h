@@ -30,6 +30,7 @@
 #include <random>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace CGAL {
 namespace Lattice_mesher_3 {
@@ -111,18 +112,18 @@ public:
     if((p.edge_length != 0.) == (p.number_of_vertices != 0.))
       throw std::invalid_argument("Lattice_particle_mesher_3: give exactly one of the edge length and the number of vertices");
     if(p.number_of_vertices != 0.) p_.edge_length = edge_length_for_vertices(p.number_of_vertices);
-    if(!(p_.edge_length > 0.) || !std::isfinite(p_.edge_length))
-      throw std::invalid_argument("Lattice_particle_mesher_3: the edge length must be positive and finite");
+    auto require_positive = [](double x, const std::string& what) {
+      if(!(x > 0.) || !std::isfinite(x))
+        throw std::invalid_argument("Lattice_particle_mesher_3: " + what + " must be positive and finite");
+    };
+    require_positive(p_.edge_length, "the edge length");
+    require_positive(p.sigma_ratio, "sigma_ratio");
+    require_positive(p.neighbor_radius, "neighbor_radius");
+    require_positive(p.gradient_tolerance, "the gradient tolerances");
+    require_positive(p.final_gradient_tolerance, "the gradient tolerances");
     if(p.threads < 1) throw std::invalid_argument("Lattice_particle_mesher_3: the number of threads must be at least 1");
     if(p.coarse_levels < -1 || p.coarse_levels > max_coarse_levels)
       throw std::invalid_argument("Lattice_particle_mesher_3: coarse_levels must be -1 (automatic) or in [0, 4]");
-    if(!(p.sigma_ratio > 0.) || !std::isfinite(p.sigma_ratio))
-      throw std::invalid_argument("Lattice_particle_mesher_3: sigma_ratio must be positive and finite");
-    if(!(p.neighbor_radius > 0.) || !std::isfinite(p.neighbor_radius))
-      throw std::invalid_argument("Lattice_particle_mesher_3: neighbor_radius must be positive and finite");
-    if(!(p.gradient_tolerance > 0.) || !(p.final_gradient_tolerance > 0.) ||
-       !std::isfinite(p.gradient_tolerance) || !std::isfinite(p.final_gradient_tolerance))
-      throw std::invalid_argument("Lattice_particle_mesher_3: the gradient tolerances must be positive and finite");
     // negative counts would silently mean the defaults (max_rounds) or nothing (smoothing)
     if(p.max_rounds < -1) throw std::invalid_argument("Lattice_particle_mesher_3: max_rounds must be -1 (automatic) or at least 0");
     if(p.smoothing_rounds < 0) throw std::invalid_argument("Lattice_particle_mesher_3: smoothing_rounds must be at least 0");
