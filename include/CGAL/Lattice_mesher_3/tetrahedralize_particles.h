@@ -95,18 +95,17 @@ Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& p
       // both lengths in the isotropic space: under a stretch the Euclidean edges are those of
       // the long direction, and cells along a sharp edge would all look flat
       const Mat3 b = isotropic_map(field.frame(g), g);
+      std::array<Vec3, 4> q;   // the vertices mapped
+      int on_curves = 0;
+      for(int i = 0; i < 4; ++i) {
+        q[i] = b * to_eigen(P(c->vertex(i)));
+        const Particle_kind kind = ps.kinds[c->vertex(i)->info()];
+        on_curves += kind == Particle_kind::SHARP_EDGE || kind == Particle_kind::FIXED;
+      }
       double mean_edge = 0.;
-      for(int i = 0; i < 4; ++i) for(int j = i + 1; j < 4; ++j)
-        mean_edge += (b * (to_eigen(P(c->vertex(i))) - to_eigen(P(c->vertex(j))))).norm();
+      for(int i = 0; i < 4; ++i) for(int j = i + 1; j < 4; ++j) mean_edge += (q[i] - q[j]).norm();
       mean_edge /= 6.;
       if((b * (to_eigen(g) - to_eigen(domain.project_on_surface(g).point))).norm() < o.flat_cell_ratio * mean_edge) {
-        int on_curves = 0;
-        std::array<Vec3, 4> q;
-        for(int i = 0; i < 4; ++i) {
-          const Particle_kind kind = ps.kinds[c->vertex(i)->info()];
-          on_curves += kind == Particle_kind::SHARP_EDGE || kind == Particle_kind::FIXED;
-          q[i] = b * to_eigen(P(c->vertex(i)));
-        }
         wedge[k] = on_curves >= 2 && smallest_dihedral_angle(q[0], q[1], q[2], q[3]) >= o.wedge_angle;
         if(!wedge[k]) inside = 0;
       }
