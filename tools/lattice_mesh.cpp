@@ -20,6 +20,7 @@
 #include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
 #include <CGAL/Lattice_mesher_3/check_mesh.h>
 #include <CGAL/Lattice_mesher_3/mesh_quality.h>
+#include <CGAL/Lattice_mesher_3/sizing_fields.h>
 
 #include <chrono>
 #include <cstdio>
@@ -49,6 +50,7 @@ static const char* usage =
   "                    [--field identity|rotation-y|fig8|fig9|FILE [--field-data FILE]]\n"
   "                    [--feature-angle DEG] [--seed S] [--threads N] [--coarse-levels K]\n"
   "                    [--max-rounds R] [--no-flips] [--smoothing-rounds N] [--quiet]\n"
+  "                    [--shape-sizing [--cells-across C] [--grading G] [--min-edge-length H]]\n"
   "                    -o OUT.mesh [--vtu OUT.vtu] [--stats OUT.json]\n"
   "       lattice-mesh [INPUT | --domain ...] [--field ...] --write-field OUT.txt --field-spacing H\n"
   "  INPUT            closed triangle surface (OFF, OBJ, STL, PLY)\n"
@@ -69,6 +71,11 @@ static const char* usage =
   "  --write-field    write the field, sampled on a grid of spacing H over the domain's bounding\n"
   "                   box, as a text file of samples, and exit\n"
   "  --feature-angle  sharp-edge threshold in degrees (default 60)\n"
+  "  --shape-sizing   the size follows the shape: where the domain is thinner than C l* (default\n"
+  "                   C = 3), the edge shrinks so that C cells fit across it, and where a gap is\n"
+  "                   narrower than l*, to the gap; the size changes by at most G per unit length\n"
+  "                   (default 0.3) and is never below H (default l*/5); --edge-length and\n"
+  "                   --vertices give l*, the largest edge\n"
   "  --no-flips, --smoothing-rounds N\n"
   "                   connectivity flips and rounds of worst-element smoothing and edge\n"
   "                   contractions after the tetrahedralization (default: flips on, 2 rounds;\n"
@@ -78,6 +85,8 @@ struct Options
 {
   std::string input, domain, lattice = "bcc", field = "identity", field_data, write_field, out, vtu, stats;
   double edge_length = 0., vertices = 0., feature_angle = 60., field_spacing = 0.;
+  bool shape_sizing = false;
+  double cells_across = 3., grading = .3, min_edge_length = 0.;
   unsigned int seed = 0;
   int threads = 1, coarse_levels = -1, max_rounds = -1;
   bool quiet = false, flip = true;
@@ -108,6 +117,10 @@ static Options parse(int argc, char** argv)
     else if(a == "--stats") o.stats = args.value(a);
     else if(a == "--quiet") o.quiet = true;
     else if(a == "--no-flips") o.flip = false;
+    else if(a == "--shape-sizing") o.shape_sizing = true;
+    else if(a == "--cells-across") o.cells_across = args.number(a);
+    else if(a == "--grading") o.grading = args.number(a);
+    else if(a == "--min-edge-length") o.min_edge_length = args.number(a);
     else if(a == "--smoothing-rounds") o.smoothing_rounds = int(args.integer(a, 0, std::numeric_limits<int>::max()));
     else command_line::Arguments::positional(a, o.input);
   }
@@ -127,6 +140,12 @@ static Options parse(int argc, char** argv)
   if(o.vertices != 0. && !(o.vertices >= 4.))
     throw std::invalid_argument("--vertices must be at least 4");
   LM::lattice_type_from_name(o.lattice);   // validates the name
+  if(!(o.cells_across >= 1.) || !std::isfinite(o.cells_across))
+    throw std::invalid_argument("--cells-across must be at least 1");
+  if(!(o.grading > 0.) || !std::isfinite(o.grading))
+    throw std::invalid_argument("--grading must be positive");
+  if(!(o.min_edge_length >= 0.) || !std::isfinite(o.min_edge_length))
+    throw std::invalid_argument("--min-edge-length must be positive");
   return o;
 }
 
@@ -175,17 +194,48 @@ struct Progress
   }
 };
 
+// The field scaled by the size that follows the shape (`LM::shape_sizing_field()`), at the l*
+// of the parameters: given, or, for a vertex count, the l* at which the scaled field gives that
+// count (a fixed point: the thin parts' vertices make the rest coarser); sets p's edge length.
+template <typename Domain>
+static Field shape_sized_field(const Domain& domain, const Field& field, LM::Lattice_mesher_parameters& p, const Options& o)
+{
+  typedef CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> Mesher;
+  const auto start = std::chrono::steady_clock::now();
+  const double estimate = Mesher(domain, field, p).edge_length();
+  const LM::Graded_sizing_field_3<K> sizing = LM::shape_sizing_field(domain, estimate, o.cells_across, o.grading, o.threads);
+  auto sized = [&](double l) {
+    const LM::Sized_frame_field_3<Field, LM::Graded_sizing_field_3<K> > f(field, sizing, l, o.min_edge_length > 0. ? o.min_edge_length : .2 * l);
+    return Field([f](const Point_3& x) { return f.frame(x); });
+  };
+  double l = estimate;
+  if(p.number_of_vertices > 0. && sizing.number_of_samples() > 0)
+    for(int it = 0; it < 20; ++it) {
+      const Field f = sized(l);
+      const double next = Mesher(domain, f, p).edge_length();
+      const bool settled = std::abs(next - l) <= 1e-3 * l;
+      l = next;
+      if(settled) break;
+    }
+  p.edge_length = l;
+  p.number_of_vertices = 0.;
+  if(!o.quiet)
+    std::printf("lattice-mesh: shape sizing: %zu samples thinner than %.3g cells, smallest size %.4g (l* %.4g), %.2f s\n",
+                sizing.number_of_samples(), o.cells_across, (std::max)(sizing.min_size(), o.min_edge_length > 0. ? o.min_edge_length : .2 * l),
+                l, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  return sized(l);
+}
+
 template <typename Domain>
 static int run(const Domain& domain, const Field_choice& choice, const Options& o)
 {
   typedef CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> Mesher;
-  const Field& field = choice.field;
   if(choice.samples) {
     try { choice.samples->check_coverage(domain.bbox()); }
     catch(const std::invalid_argument& e) { throw std::invalid_argument("--field " + o.field + ": " + e.what()); }
   }
   if(!o.write_field.empty()) {
-    LM::write_frame_field_samples(o.write_field, field, domain.bbox(), o.field_spacing);
+    LM::write_frame_field_samples(o.write_field, choice.field, domain.bbox(), o.field_spacing);
     if(!o.quiet) std::printf("lattice-mesh: wrote the field '%s' to '%s'\n", o.field.c_str(), o.write_field.c_str());
     return 0;
   }
@@ -199,6 +249,7 @@ static int run(const Domain& domain, const Field_choice& choice, const Options& 
   p.smoothing_rounds = o.smoothing_rounds;
   p.edge_length = o.edge_length;
   p.number_of_vertices = o.vertices;
+  const Field field = o.shape_sizing ? shape_sized_field(domain, choice.field, p, o) : choice.field;
   Mesher mesher(domain, field, p);
   if(!o.quiet)
     std::printf("lattice-mesh: %s lattice, l* = %.6g, about %.0f vertices expected, %d coarse level(s), %d thread(s)\n",
@@ -214,6 +265,7 @@ static int run(const Domain& domain, const Field_choice& choice, const Options& 
   const LM::Mesh_validity_report validity = LM::check_tetrahedral_mesh(mesh);
   LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, mesher.lattice());
   q.hausdorff = LM::boundary_hausdorff_distance(mesh, domain, 0.25 * mesher.edge_length());
+  q.edge_length = mesher.edge_length();
   q.seconds.optimize = std::chrono::duration<double>(t1 - t0).count();
   q.seconds.mesh = std::chrono::duration<double>(t2 - t1).count();
   q.seconds.total = q.seconds.optimize + q.seconds.mesh;
@@ -239,8 +291,11 @@ int main(int argc, char** argv)
   try {
     const Options o = parse(argc, argv);
     const Field_choice field = make_field(o);
-    if(!o.input.empty())
-      return run(LM::read_polyhedral_lattice_domain_3<K>(o.input, o.feature_angle), field, o);
+    if(!o.input.empty()) {
+      const Surface_domain domain = LM::read_polyhedral_lattice_domain_3<K>(o.input, o.feature_angle);
+      for(const std::string& w : domain.warnings()) std::cerr << "lattice-mesh: warning: '" << o.input << "': " << w << "\n";
+      return run(domain, field, o);
+    }
     if(o.domain == "cube")
       return run(Surface_domain(LM::make_cube_surface_3<K>(0.1, 1.1), o.feature_angle), field, o);
     if(o.domain == "cube11")

@@ -308,6 +308,7 @@ TEST(MeshQuality, JsonHasExactlyTheKeysAndRoundTrips)
   Mesh m = cube_mesh(2);
   Mesh_quality_3 q = compute_mesh_quality(m, Constant_field(), bcc_lattice());
   q.hausdorff = 0.012345678901;
+  q.edge_length = 0.0625;
   q.seconds.optimize = 1.5;
   q.seconds.mesh = 2.25;
   q.seconds.total = 4.125;
@@ -326,7 +327,7 @@ TEST(MeshQuality, JsonHasExactlyTheKeysAndRoundTrips)
   const std::vector<std::string> expected = {
     "vertices", "tets", "theta_min", "min", "mean", "std", "theta_max", "max", "mean", "std",
     "rho", "min", "mean", "std", "kappa", "min", "mean", "std", "epsilon", "mean", "std",
-    "below20", "below40", "hausdorff", "seconds", "optimize", "mesh", "total" };
+    "below20", "below40", "hausdorff", "edge_length", "seconds", "optimize", "mesh", "total" };
   EXPECT_EQ(keys, expected);
   EXPECT_EQ(std::count(json.begin(), json.end(), '{'), std::count(json.begin(), json.end(), '}'));
 
@@ -346,6 +347,7 @@ TEST(MeshQuality, JsonHasExactlyTheKeysAndRoundTrips)
   EXPECT_EQ(json_number(json, "below20"), double(q.below20));
   EXPECT_EQ(json_number(json, "below40"), double(q.below40));
   EXPECT_TRUE(near(json_number(json, "hausdorff"), q.hausdorff));
+  EXPECT_EQ(json_number(json, "edge_length"), 0.0625);
   EXPECT_EQ(json_number(json, "optimize"), 1.5);
   EXPECT_EQ(json_number(json, "mesh", section("seconds")), 2.25);
   EXPECT_EQ(json_number(json, "total"), 4.125);

@@ -12,6 +12,7 @@
 
 #include <CGAL/Lattice_mesher_3/Boundary_projection_3.h>
 #include <CGAL/Lattice_mesher_3/internal/surface_cell_grid.h>
+#include <CGAL/Lattice_mesher_3/internal/winding_number.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -19,21 +20,28 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_segment_primitive.h>
-#include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/split_graph_into_polylines.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
 #include <boost/graph/adjacency_list.hpp>
+
+#include <algorithm>
+#include <numeric>
+#include <utility>
 
 #include <cmath>
 #include <fstream>
@@ -52,9 +60,15 @@ namespace Lattice_mesher_3 {
 A model of `LatticeMeshDomain_3`: the volume bounded by a closed triangle surface, with the
 sharp edges of the surface as feature curves.
 
-The constructor copies the surface, removes its isolated vertices, triangulates polygonal
-faces, checks that the surface bounds a volume (closed, not self-intersecting, positive and
-finite volume) and orients it outward.
+The constructor copies the surface and makes it bound a volume as Mesh_3 users expect: it
+removes isolated vertices, triangulates polygonal faces, stitches border edges that coincide,
+removes degenerate faces, and orients every component outward, a component enclosed by
+another bounding a cavity. A self-intersecting surface is meshed too: the volume is where
+the winding number of the surface is at least 1 (the union of overlapping parts), its boundary
+the faces between such points and the outside; buried faces are left out of the projections,
+the features and the samples, and `warnings()` says how many face pairs intersect. Only a
+surface that stays open (border edges), has no faces, non-finite coordinates, or encloses no
+volume is refused.
 Edges whose dihedral angle differs from flat by more than `feature_angle` degrees are sharp
 (`Polygon_mesh_processing::detect_sharp_edges()`). The sharp-edge graph is split into
 polylines with the rule of `Polyhedral_mesh_domain_with_features_3`: a vertex ends a polyline
@@ -91,11 +105,12 @@ public:
   /// @{
   CGAL::Bbox_3 bbox() const { return m_data->bbox; }
 
-  /// a ray cast only where the cell grid (below) does not tell
+  /// the winding number of the surface about `p` is at least 1; computed (by a ray cast) only
+  /// where the cell grid (below) does not tell
   bool is_inside(const Point_3& p) const
   {
     const int side = m_data->cells.side(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    return side != 0 ? side > 0 : m_data->side_of(p) == CGAL::ON_BOUNDED_SIDE;
+    return side != 0 ? side > 0 : m_data->winding(p) >= 1;
   }
 
   /// from a grid of 128 cubic cells along the longest side of the bounding box, classified in
@@ -151,14 +166,23 @@ public:
       throw std::invalid_argument("Polyhedral_lattice_domain_3::sample_surface(): spacing "
                                   + std::to_string(spacing) + " is not positive");
     namespace PMP = CGAL::Polygon_mesh_processing;
-    return PMP::sample_triangle_mesh(m_data->surface, out,
+    return PMP::sample_triangle_mesh(m_data->boundary, out,
                                      CGAL::parameters::use_grid_sampling(true)
                                                       .grid_spacing(spacing / 2.));
   }
   /// @}
 
-  /// the closed, triangulated, outward-oriented boundary surface
+  /// the closed, triangulated surface, each component oriented outward (or inward around a
+  /// cavity)
   const Surface_mesh& surface() const { return m_data->surface; }
+  /// the faces of `surface()` that bound the volume: all of them unless the surface
+  /// self-intersects, when the buried ones are left out
+  const Surface_mesh& boundary() const { return m_data->boundary; }
+  /// what the constructor repaired or found in the input, a sentence each; empty for a closed,
+  /// outward-oriented surface without self-intersections or degenerate faces
+  const std::vector<std::string>& warnings() const { return m_data->warnings; }
+  /// the number of pairs of faces of the surface that intersect
+  std::size_t number_of_self_intersections() const { return m_data->self_intersections; }
   /// the feature polylines; a closed curve repeats its first point at its end
   const std::vector<Polyline>& curves() const { return m_data->curves; }
   /// the feature angle, in degrees, used to detect the sharp edges
@@ -170,8 +194,6 @@ private:
   typedef CGAL::AABB_face_graph_triangle_primitive<Surface_mesh, CGAL::Default, CGAL::Tag_true, CGAL::Tag_true>
                                                                              Triangle_primitive;
   typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Triangle_primitive> >         Triangle_tree;
-  typedef CGAL::Side_of_triangle_mesh<Surface_mesh, K, CGAL::Default, Triangle_tree>
-                                                                             Side_of_surface;
   typedef typename std::vector<typename K::Segment_3>::const_iterator        Segment_iterator;
   typedef CGAL::AABB_segment_primitive<K, Segment_iterator>                 Segment_primitive;
   typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Segment_primitive> >          Segment_tree;
@@ -211,56 +233,90 @@ private:
     return v / std::sqrt(CGAL::to_double(v.squared_length()));
   }
 
-  // Validates and prepares a copy of the input: the trees below are built on the result.
-  static Surface_mesh prepared_surface(const Surface_mesh& input, double feature_angle)
+  typedef typename Surface_mesh::Face_index Face_index;
+  typedef std::vector<std::pair<Face_index, Face_index> > Face_pairs;
+  typedef internal::Winding_number_3<K> Winding_number;
+
+  static typename K::Triangle_3 triangle(const Surface_mesh& mesh, Face_index f)
+  {
+    const typename Surface_mesh::Halfedge_index h = mesh.halfedge(f);
+    return typename K::Triangle_3(mesh.point(mesh.source(h)), mesh.point(mesh.target(h)),
+                                  mesh.point(mesh.target(mesh.next(h))));
+  }
+
+  static std::vector<typename K::Triangle_3> triangles(const Surface_mesh& mesh)
+  {
+    std::vector<typename K::Triangle_3> result;
+    result.reserve(mesh.number_of_faces());
+    for(Face_index f : mesh.faces()) result.push_back(triangle(mesh, f));
+    return result;
+  }
+
+  static std::size_t number_of_border_edges(const Surface_mesh& mesh)
+  {
+    std::size_t n = 0;
+    for(typename Surface_mesh::Halfedge_index h : mesh.halfedges())
+      if(mesh.is_border(h)) ++n;
+    return n;
+  }
+
+  // Orients each component of a self-intersecting surface, which orient_to_bound_a_volume()
+  // does not take: outward (positive signed volume), then, largest first, a component that
+  // meets no other and lies where the others wind at least once turns inward (a cavity; an
+  // island in it stays outward, as the cavity already took its 1 back).
+  static void orient_overlapping_components(Surface_mesh& mesh, const Face_pairs& pairs)
   {
     namespace PMP = CGAL::Polygon_mesh_processing;
-    if(!(feature_angle > 0. && feature_angle <= 180.))
-      throw std::invalid_argument("feature angle " + std::to_string(feature_angle)
-                                  + " is outside (0, 180] degrees");
-    for(typename Surface_mesh::Vertex_index v : input.vertices()) { // the indices of the input
-      const Point_3& p = input.point(v);
-      if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y()))
-         || !std::isfinite(CGAL::to_double(p.z())))
-        throw std::invalid_argument("vertex " + std::to_string(std::size_t(v))
-                                    + " has a non-finite coordinate");
+    auto component = mesh.template add_property_map<Face_index, std::size_t>("f:lm_component").first;
+    const std::size_t n = PMP::connected_components(mesh, component);
+    std::vector<std::vector<Face_index> > faces_of(n);
+    std::vector<double> volume(n, 0.);
+    const Point_3 origin = mesh.point(*mesh.vertices().begin());   // near the mesh: fewer digits lost
+    for(Face_index f : mesh.faces()) {
+      faces_of[component[f]].push_back(f);
+      const typename K::Triangle_3 t = triangle(mesh, f);
+      volume[component[f]] += CGAL::to_double(CGAL::volume(origin, t[0], t[1], t[2]));
     }
-    Surface_mesh mesh = input;
-    // An isolated vertex has no halfedge, which orient_to_bound_a_volume() dereferences; OFF
-    // files may list unused vertices.
-    PMP::remove_isolated_vertices(mesh);
-    mesh.collect_garbage(); // dense indices: face normals are stored by face index
-    if(mesh.number_of_faces() == 0)
-      throw std::invalid_argument("the surface has no faces");
-    if(!CGAL::is_triangle_mesh(mesh) && !PMP::triangulate_faces(mesh))
-      throw std::invalid_argument("some polygonal faces cannot be triangulated");
-    std::size_t border_edges = 0;
-    for(typename Surface_mesh::Halfedge_index h : mesh.halfedges())
-      if(mesh.is_border(h))
-        ++border_edges;
-    if(border_edges > 0)
-      throw std::invalid_argument("the surface is not closed (" + std::to_string(border_edges)
-                                  + " border edges)");
-    if(PMP::does_self_intersect(mesh))
-      throw std::invalid_argument("the surface self-intersects (or has degenerate faces)");
-    // Also handles nested components (cavities), unlike a single is_outward_oriented() test.
-    PMP::orient_to_bound_a_volume(mesh);
-    // Coordinates near the limits of double overflow the volume (and the squared distances).
-    const double volume = CGAL::to_double(PMP::volume(mesh));
-    if(!(volume > 0) || !std::isfinite(volume))
-      throw std::invalid_argument("the surface bounds a zero, negative or non-finite volume");
-    return mesh;
+    std::vector<bool> meets_another(n, false);
+    for(const auto& fp : pairs)
+      if(component[fp.first] != component[fp.second])
+        meets_another[component[fp.first]] = meets_another[component[fp.second]] = true;
+    for(std::size_t c = 0; c < n; ++c)
+      if(volume[c] < 0.) PMP::reverse_face_orientations(faces_of[c], mesh);
+    std::vector<std::size_t> order(n);
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return std::abs(volume[a]) > std::abs(volume[b]) || (std::abs(volume[a]) == std::abs(volume[b]) && a < b);
+    });
+    std::unique_ptr<Winding_number> winding(new Winding_number(triangles(mesh)));
+    for(std::size_t c : order) {
+      if(meets_another[c] || n == 1) continue;
+      // a point just outside one of its faces, where the component itself winds 0 times
+      const Face_index f = faces_of[c].front();
+      const typename K::Triangle_3 t = triangle(mesh, f);
+      const Vector_3 normal = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+      const double length = std::sqrt(CGAL::to_double(normal.squared_length()));
+      if(!(length > 0.)) continue;
+      const Point_3 outside = CGAL::centroid(t) + normal * (1e-6 / std::sqrt(length));
+      if((*winding)(outside) < 1) continue;
+      PMP::reverse_face_orientations(faces_of[c], mesh);
+      winding.reset(new Winding_number(triangles(mesh)));
+    }
+    mesh.remove_property_map(component);
   }
 
   // Everything the queries read, built once and never moved: the primitives and the inside
-  // test point into `surface`, `segments` and `triangle_tree`.
+  // test point into `boundary`, `segments` and the winding number's triangles.
   struct Data
   {
     double feature_angle;
+    std::vector<std::string> warnings;
+    std::size_t self_intersections = 0;
     Surface_mesh surface;
+    Winding_number winding;
+    Surface_mesh boundary;
     Triangle_tree triangle_tree;
-    Side_of_surface side_of;
-    std::vector<Vector_3> face_normals;
+    std::vector<Vector_3> face_normals; // of `boundary`, toward the outside
     std::vector<Polyline> curves;
     std::vector<Point_3> corners;
     std::vector<typename K::Segment_3> segments; // curve by curve, in polyline order
@@ -273,26 +329,25 @@ private:
 
     Data(const Surface_mesh& input, double angle)
       : feature_angle(angle),
-        surface(prepared_surface(input, angle)),
-        triangle_tree(faces(surface).first, faces(surface).second, surface),
-        side_of(triangle_tree)
+        surface(prepare(input)),
+        winding(triangles(surface)),
+        boundary(bounding_part())
     {
       namespace PMP = CGAL::Polygon_mesh_processing;
+      triangle_tree.insert(faces(boundary).first, faces(boundary).second, boundary);
+      triangle_tree.build();
       triangle_tree.accelerate_distance_queries();
-      face_normals.reserve(surface.number_of_faces());
-      for(typename Surface_mesh::Face_index f : surface.faces())
-        face_normals.push_back(PMP::compute_face_normal(f, surface));
+      auto flipped = boundary.template property_map<Face_index, bool>("f:lm_flipped").first;
+      face_normals.reserve(boundary.number_of_faces());
+      for(Face_index f : boundary.faces())
+        face_normals.push_back(PMP::compute_face_normal(f, boundary) * (flipped[f] ? -1. : 1.));
+      boundary.remove_property_map(flipped);
       bbox = PMP::bbox(surface);
-      std::vector<typename K::Triangle_3> triangles;
-      triangles.reserve(surface.number_of_faces());
-      for(typename Surface_mesh::Face_index f : surface.faces()) {
-        const typename Surface_mesh::Halfedge_index h = surface.halfedge(f);
-        triangles.emplace_back(surface.point(surface.source(h)), surface.point(surface.target(h)),
-                               surface.point(surface.target(surface.next(h))));
-      }
-      cells = internal::Surface_cell_grid_3(bbox, triangles);
-      volume = CGAL::to_double(PMP::volume(surface));
-      area = CGAL::to_double(PMP::area(surface));
+      cells = internal::Surface_cell_grid_3(bbox, triangles(surface), [this](double x, double y, double z) {
+        return winding(Point_3(x, y, z)) >= 1;
+      });
+      volume = CGAL::to_double(PMP::volume(surface));   // overlaps count twice: a bound, for the sizing
+      area = CGAL::to_double(PMP::area(boundary));
       build_curves();
       for(std::size_t c = 0; c < curves.size(); ++c)
         for(std::size_t i = 0; i + 1 < curves[c].size(); ++i) {
@@ -311,25 +366,104 @@ private:
       }
     }
 
+    // Validates and repairs a copy of the input (see the class documentation).
+    Surface_mesh prepare(const Surface_mesh& input)
+    {
+      namespace PMP = CGAL::Polygon_mesh_processing;
+      if(!(feature_angle > 0. && feature_angle <= 180.))
+        throw std::invalid_argument("feature angle " + std::to_string(feature_angle)
+                                    + " is outside (0, 180] degrees");
+      for(typename Surface_mesh::Vertex_index v : input.vertices()) { // the indices of the input
+        const Point_3& p = input.point(v);
+        if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y()))
+           || !std::isfinite(CGAL::to_double(p.z())))
+          throw std::invalid_argument("vertex " + std::to_string(std::size_t(v))
+                                      + " has a non-finite coordinate");
+      }
+      Surface_mesh mesh = input;
+      // An isolated vertex has no halfedge, which orient_to_bound_a_volume() dereferences; OFF
+      // files may list unused vertices.
+      PMP::remove_isolated_vertices(mesh);
+      mesh.collect_garbage(); // dense indices: face normals are stored by face index
+      if(mesh.number_of_faces() == 0)
+        throw std::invalid_argument("the surface has no faces");
+      if(!CGAL::is_triangle_mesh(mesh) && !PMP::triangulate_faces(mesh))
+        throw std::invalid_argument("some polygonal faces cannot be triangulated");
+      if(const std::size_t open = number_of_border_edges(mesh)) {
+        PMP::stitch_borders(mesh);   // the same edge written twice (STL, seams of OBJ parts)
+        if(const std::size_t left = number_of_border_edges(mesh))
+          throw std::invalid_argument("the surface is not closed (" + std::to_string(left) + " border edges)");
+        warnings.push_back("stitched " + std::to_string(open / 2) + " pairs of coinciding border edges");
+      }
+      std::size_t degenerate = 0;
+      for(Face_index f : mesh.faces())
+        degenerate += PMP::is_degenerate_triangle_face(f, mesh) ? 1 : 0;
+      if(degenerate > 0) {
+        PMP::remove_degenerate_faces(mesh);
+        mesh.collect_garbage();
+        warnings.push_back("removed " + std::to_string(degenerate) + " degenerate faces");
+        if(mesh.number_of_faces() == 0) throw std::invalid_argument("the surface has no faces but degenerate ones");
+      }
+      Face_pairs pairs;
+      PMP::self_intersections(mesh, std::back_inserter(pairs));
+      self_intersections = pairs.size();
+      if(pairs.empty())
+        PMP::orient_to_bound_a_volume(mesh);   // nested components (cavities) too
+      else {
+        orient_overlapping_components(mesh, pairs);
+        warnings.push_back("the surface self-intersects (" + std::to_string(pairs.size())
+                           + " pairs of faces): meshing the volume it winds around at least once");
+      }
+      // Coordinates near the limits of double overflow the volume (and the squared distances).
+      const double v = CGAL::to_double(PMP::volume(mesh));
+      if(!(v > 0) || !std::isfinite(v))
+        throw std::invalid_argument("the surface bounds a zero, negative or non-finite volume");
+      return mesh;
+    }
+
+    // The faces with the volume on one side only (winding number >= 1 on one side, 0 or less on
+    // the other), each marked "f:lm_flipped" where the volume is on its outer side: without
+    // self-intersections, the whole surface.
+    Surface_mesh bounding_part() const
+    {
+      Surface_mesh part = surface;
+      auto flipped = part.template add_property_map<Face_index, bool>("f:lm_flipped", false).first;
+      if(self_intersections == 0) return part;
+      std::vector<Face_index> buried;
+      for(Face_index f : part.faces()) {
+        const typename K::Triangle_3 t = triangle(part, f);
+        const Vector_3 normal = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+        const double length = std::sqrt(CGAL::to_double(normal.squared_length()));
+        if(!(length > 0.)) { buried.push_back(f); continue; }
+        const Vector_3 step = normal * (1e-6 / std::sqrt(length));   // 1e-6 of the face's size
+        const bool in = winding(CGAL::centroid(t) - step) >= 1, out = winding(CGAL::centroid(t) + step) >= 1;
+        if(in == out) buried.push_back(f);
+        else flipped[f] = out;
+      }
+      for(Face_index f : buried) CGAL::Euler::remove_face(part.halfedge(f), part);
+      part.collect_garbage();
+      return part;
+    }
+
     void build_curves()
     {
       typedef typename Surface_mesh::Edge_index Edge_index;
       typedef typename Surface_mesh::Vertex_index Vertex_index;
-      auto is_sharp = surface.template add_property_map<Edge_index, bool>("e:is_sharp", false).first;
-      CGAL::Polygon_mesh_processing::detect_sharp_edges(surface, feature_angle, is_sharp);
+      auto is_sharp = boundary.template add_property_map<Edge_index, bool>("e:is_sharp", false).first;
+      CGAL::Polygon_mesh_processing::detect_sharp_edges(boundary, feature_angle, is_sharp);
       Feature_graph graph;
-      std::vector<Feature_vertex> graph_vertex(surface.number_of_vertices(),
+      std::vector<Feature_vertex> graph_vertex(boundary.number_of_vertices(),
                                                boost::graph_traits<Feature_graph>::null_vertex());
       auto add_vertex = [&](Vertex_index v) {
         Feature_vertex& gv = graph_vertex[v.idx()];
         if(gv == boost::graph_traits<Feature_graph>::null_vertex())
-          gv = boost::add_vertex(surface.point(v), graph);
+          gv = boost::add_vertex(boundary.point(v), graph);
         return gv;
       };
-      for(Edge_index e : surface.edges())
+      for(Edge_index e : boundary.edges())
         if(is_sharp[e])
-          boost::add_edge(add_vertex(surface.vertex(e, 0)), add_vertex(surface.vertex(e, 1)), graph);
-      surface.remove_property_map(is_sharp); // keep surface() free of our bookkeeping
+          boost::add_edge(add_vertex(boundary.vertex(e, 0)), add_vertex(boundary.vertex(e, 1)), graph);
+      boundary.remove_property_map(is_sharp); // keep boundary() free of our bookkeeping
 
       Polyline_collector collector{graph, curves};
       CGAL::split_graph_into_polylines(graph, collector, Is_corner());
@@ -354,7 +488,8 @@ private:
 \ingroup PkgLatticeMesher3Domains
 
 reads a closed surface from `filename` (OFF, OBJ, STL or PLY, by extension) with
-`CGAL::IO::read_polygon_mesh()` and builds the domain it bounds. Throws `std::runtime_error`
+`CGAL::Polygon_mesh_processing::IO::read_polygon_mesh()`, which repairs and orients a polygon
+soup, and builds the domain it bounds. Throws `std::runtime_error`
 if the file cannot be opened or read and `std::invalid_argument` if the surface does not bound a
 volume or `feature_angle` is not in (0, 180]; the message starts with the file name.
 */
@@ -369,10 +504,11 @@ read_polyhedral_lattice_domain_3(const std::string& filename, double feature_ang
   if(file.tellg() == 0)
     throw std::runtime_error("'" + filename + "': the file is empty");
   file.close();
-  if(!CGAL::IO::read_polygon_mesh(filename, mesh))
+  // read as a polygon soup: duplicated points merged, degenerate and repeated polygons
+  // removed, faces oriented consistently (non-manifold edges and vertices are split)
+  if(!CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(filename, mesh))
     throw std::runtime_error("'" + filename + "': cannot read a polygon mesh (unsupported "
-                             "extension, non-manifold or inconsistently oriented faces, or "
-                             "malformed data, e.g. a coordinate such as nan)");
+                             "extension or malformed data, e.g. a coordinate such as nan)");
   try {
     return Polyhedral_lattice_domain_3<K>(mesh, feature_angle);
   }

@@ -82,6 +82,7 @@ struct Mesh_quality_3
   std::size_t below20 = 0;       ///< tetrahedra with theta_min < 20 degrees
   std::size_t below40 = 0;       ///< tetrahedra with theta_min < 40 degrees
   double hausdorff = -1.;
+  double edge_length = 0.;       ///< the l* the mesh was made for; 0 when not known (filled by the caller)
   struct Timings
   {
     double optimize = 0.;
@@ -537,7 +538,7 @@ inline void print_quality_table(std::ostream& os, const Mesh_quality_3& q)
 \ingroup PkgLatticeMesher3Quality
 Writes `q` as a JSON object with the keys `vertices`, `tets`, `theta_min` {`min`, `mean`, `std`},
 `theta_max` {`max`, `mean`, `std`}, `rho` and `kappa` {`min`, `mean`, `std`}, `epsilon`
-{`mean`, `std`}, `below20`, `below40`, `hausdorff` (-1 when not measured) and `seconds`
+{`mean`, `std`}, `below20`, `below40`, `hausdorff` (-1 when not measured), `edge_length` and `seconds`
 {`optimize`, `mesh`, `total`}. Numbers have 10 significant digits.
 */
 inline void write_quality_json(std::ostream& os, const Mesh_quality_3& q)
@@ -561,6 +562,7 @@ inline void write_quality_json(std::ostream& os, const Mesh_quality_3& q)
   os << "  \"below20\": " << q.below20 << ",\n"
      << "  \"below40\": " << q.below40 << ",\n"
      << "  \"hausdorff\": " << q.hausdorff << ",\n"
+     << "  \"edge_length\": " << q.edge_length << ",\n"
      << "  \"seconds\": {\"optimize\": " << q.seconds.optimize << ", \"mesh\": " << q.seconds.mesh
      << ", \"total\": " << q.seconds.total << "}\n"
      << "}\n";

@@ -40,7 +40,8 @@ inline Mat3 metric_root(const Mat3& b)
 // single map otherwise (fig9's curved metric). A Euclidean Delaunay of particles whose
 // spacing differs 80-fold between directions connects each to far neighbours that no local
 // flip undoes. When the metric is the same everywhere, returns x mapped by its root (x itself
-// for a cross field), which is exact, and sets `uniform`.
+// for a cross field), which is exact, and when it is conformal (a multiple of the identity, a
+// size times a cross field) x itself; both set `uniform`.
 template <typename K, typename FrameField>
 std::vector<Vec3> isotropic_embedding(const std::vector<Vec3>& x, const FrameField& field, double radius,
                                       int threads, bool& uniform)
@@ -51,11 +52,17 @@ std::vector<Vec3> isotropic_embedding(const std::vector<Vec3>& x, const FrameFie
   for(std::size_t i = 0; i < n; ++i) s[i] = metric_root(frames.B[i]);
   uniform = true;
   for(std::size_t i = 1; i < n && uniform; ++i) uniform = (s[i] - s[0]).norm() <= 1e-9 * s[0].norm();
+  // a multiple of the identity (any cross field, any size) changes no Delaunay test of nearby
+  // points: where it varies (a size that follows the shape) the particles are graded as the
+  // points of any graded mesh, whose Euclidean Delaunay tetrahedralization is the usual one
+  auto scaled_identity = [](const Mat3& m) { return (m - m.trace() / 3. * Mat3::Identity()).norm() <= 1e-9 * m.norm(); };
+  bool conformal = true;
+  for(std::size_t i = 0; i < n && conformal; ++i) conformal = scaled_identity(s[i]);
   std::vector<Vec3> y(n);
-  if(uniform || n < 2) {
-    // a multiple of the identity (any cross field) changes no Delaunay test: keep x bit for bit
-    const bool scaled_identity = n == 0 || (s[0] - s[0].trace() / 3. * Mat3::Identity()).norm() <= 1e-9 * s[0].norm();
-    for(std::size_t i = 0; i < n; ++i) y[i] = scaled_identity ? x[i] : Vec3(s[0] * x[i]);
+  if(uniform || conformal || n < 2) {
+    // keep x bit for bit when the metric is conformal
+    for(std::size_t i = 0; i < n; ++i) y[i] = conformal ? x[i] : Vec3(s[0] * x[i]);
+    uniform = true;   // no embedding: nothing can fold
     return y;
   }
 

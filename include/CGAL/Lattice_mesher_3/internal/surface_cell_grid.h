@@ -25,9 +25,10 @@ namespace Lattice_mesher_3 {
 namespace internal {
 
 // Cubic cells over the box of a closed surface, each classified once: touched (its closed box
-// meets a triangle: exact test), outside or inside (flood fill from the padding: two untouched
-// cells sharing a face lie on the same side), and for inside cells the Chebyshev distance k, in
-// cells, to the nearest touched cell. A point in an untouched cell needs no ray cast to be
+// meets a triangle: exact test), outside or inside (two untouched cells sharing a face lie on
+// the same side: each region of untouched cells takes the side of one of its cell centres, and
+// the region of the padding is outside; a cavity or a part enclosed by another is a region of
+// its own), and for inside cells the Chebyshev distance k, in cells, to the nearest touched cell. A point in an untouched cell needs no ray cast to be
 // classified, and one in an inside cell is at least (k - 1) h from the surface: the mesher
 // skips the projections of particles deep inside (most of them) with it.
 class Surface_cell_grid_3
@@ -35,9 +36,10 @@ class Surface_cell_grid_3
 public:
   Surface_cell_grid_3() = default;
 
-  // `triangles`: a range of K::Triangle_3
-  template <typename TriangleRange>
-  Surface_cell_grid_3(const CGAL::Bbox_3& box, const TriangleRange& triangles, int resolution = 128)
+  // `triangles`: a range of K::Triangle_3; `inside(x, y, z)`: the side of a point off the surface
+  template <typename TriangleRange, typename InsideTest>
+  Surface_cell_grid_3(const CGAL::Bbox_3& box, const TriangleRange& triangles, const InsideTest& inside,
+                      int resolution = 128)
   {
     const std::array<double, 3> size = { box.x_span(), box.y_span(), box.z_span() };
     const double extent = (std::max)({ size[0], size[1], size[2] });
@@ -70,31 +72,44 @@ public:
             if(CGAL::do_intersect(t, cell)) s = TOUCHED;
           }
     }
-    // outside: untouched cells face-connected to the outer layer
+    // outside: untouched cells face-connected to the outer layer; then every other region of
+    // untouched cells takes the side of its first cell's centre
     std::deque<std::array<int, 3> > queue;
+    unsigned char side = OUTSIDE;
     auto visit = [&](int i, int j, int k) {
       if(!on_grid(i, j, k)) return;
       unsigned char& s = state_[index(i, j, k)];
-      if(s == UNKNOWN) { s = OUTSIDE; queue.push_back({ i, j, k }); }
+      if(s == UNKNOWN) { s = side; queue.push_back({ i, j, k }); }
+    };
+    auto fill = [&] {
+      while(!queue.empty()) {
+        const std::array<int, 3> c = queue.front();
+        queue.pop_front();
+        for(int a = 0; a < 3; ++a)
+          for(int d : { -1, 1 }) {
+            std::array<int, 3> q = c;
+            q[a] += d;
+            visit(q[0], q[1], q[2]);
+          }
+      }
     };
     for(int i = 0; i < n_[0]; ++i)
       for(int j = 0; j < n_[1]; ++j)
         for(int k = 0; k < n_[2]; ++k)
           if(i == 0 || j == 0 || k == 0 || i == n_[0] - 1 || j == n_[1] - 1 || k == n_[2] - 1)
             visit(i, j, k);
-    while(!queue.empty()) {
-      const std::array<int, 3> c = queue.front();
-      queue.pop_front();
-      for(int a = 0; a < 3; ++a)
-        for(int d : { -1, 1 }) {
-          std::array<int, 3> q = c;
-          q[a] += d;
-          visit(q[0], q[1], q[2]);
-        }
-    }
-    // inside: the rest; depth by a breadth-first search from the touched cells over the 26
-    // neighbours (Chebyshev distance), saturated at 255; an inside cell of depth 0 is unvisited
-    for(unsigned char& s : state_) if(s == UNKNOWN) s = INSIDE;
+    fill();
+    for(int i = 0; i < n_[0]; ++i)
+      for(int j = 0; j < n_[1]; ++j)
+        for(int k = 0; k < n_[2]; ++k)
+          if(state_[index(i, j, k)] == UNKNOWN) {
+            side = inside(origin_[0] + (i + .5) * h_, origin_[1] + (j + .5) * h_, origin_[2] + (k + .5) * h_)
+                     ? INSIDE : OUTSIDE;
+            visit(i, j, k);
+            fill();
+          }
+    // depth by a breadth-first search from the touched cells over the 26 neighbours (Chebyshev
+    // distance), saturated at 255; an inside cell of depth 0 is unvisited
     for(int i = 0; i < n_[0]; ++i)
       for(int j = 0; j < n_[1]; ++j)
         for(int k = 0; k < n_[2]; ++k)
