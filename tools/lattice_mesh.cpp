@@ -194,36 +194,68 @@ struct Progress
   }
 };
 
-// The field scaled by the size that follows the shape (`LM::shape_sizing_field()`), at the l*
-// of the parameters: given, or, for a vertex count, the l* at which the scaled field gives that
-// count (a fixed point: the thin parts' vertices make the rest coarser); sets p's edge length.
+// The field scaled by the size that follows the shape (`LM::shape_sizing_field()`), and p's
+// edge length: given, or for a vertex count, the largest edge l* and the cells across C that
+// give that count. The thin parts' vertices are paid for by the rest: l* may grow by a quarter
+// over its estimate without sizing; past that, fewer cells fit across the thin parts (C down to
+// 1.5), and only then does l* grow further.
 template <typename Domain>
 static Field shape_sized_field(const Domain& domain, const Field& field, LM::Lattice_mesher_parameters& p, const Options& o)
 {
   typedef CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> Mesher;
+  typedef LM::Graded_sizing_field_3<K> Sizing;
   const auto start = std::chrono::steady_clock::now();
   const double estimate = Mesher(domain, field, p).edge_length();
-  const LM::Graded_sizing_field_3<K> sizing = LM::shape_sizing_field(domain, estimate, o.cells_across, o.grading, o.threads);
-  auto sized = [&](double l) {
-    const LM::Sized_frame_field_3<Field, LM::Graded_sizing_field_3<K> > f(field, sizing, l, o.min_edge_length > 0. ? o.min_edge_length : .2 * l);
+  const double n = p.number_of_vertices;
+  p.number_of_vertices = 0.;
+  const auto measures = LM::thickness_samples(domain, .5 * estimate, .125 * estimate, 2. * o.cells_across * estimate, o.threads);
+  auto sizing = [&](double cells) {
+    std::vector<std::pair<Point_3, double> > samples;
+    LM::size_samples(measures, cells, 2. * estimate, std::back_inserter(samples));
+    return Sizing(samples, o.grading, 2. * estimate);
+  };
+  auto sized = [&](const Sizing& h, double l) {
+    const LM::Sized_frame_field_3<Field, Sizing> f(field, h, l, o.min_edge_length > 0. ? o.min_edge_length : .25 * l);
     return Field([f](const Point_3& x) { return f.frame(x); });
   };
-  double l = estimate;
-  if(p.number_of_vertices > 0. && sizing.number_of_samples() > 0)
-    for(int it = 0; it < 20; ++it) {
-      const Field f = sized(l);
-      const double next = Mesher(domain, f, p).edge_length();
-      const bool settled = std::abs(next - l) <= 1e-3 * l;
-      l = next;
-      if(settled) break;
+  auto count = [&](const Sizing& h, double l) {
+    const Field f = sized(h, l);
+    LM::Lattice_mesher_parameters q = p;
+    q.edge_length = l;
+    return Mesher(domain, f, q).expected_vertices(l);
+  };
+  // the largest x in [lo, hi] with f(x) <= n, f decreasing in x (or increasing, with `up`)
+  auto solve = [&](double lo, double hi, const auto& f) {
+    for(int it = 0; it < 40; ++it) { const double mid = .5 * (lo + hi); (f(mid) > n ? lo : hi) = mid; }
+    return hi;
+  };
+  double l = o.edge_length > 0. ? o.edge_length : estimate, cells = o.cells_across;
+  Sizing h = sizing(cells);
+  if(n > 0. && h.number_of_samples() > 0) {
+    const double most = 1.25 * estimate;
+    if(count(h, most) <= n) l = solve(estimate, most, [&](double x) { return count(h, x); });
+    else {
+      l = most;
+      const double fewest = (std::min)(1.5, o.cells_across);
+      if(count(sizing(fewest), most) <= n) {   // cells across: count increases with them
+        double lo = fewest, hi = o.cells_across;
+        for(int it = 0; it < 12; ++it) { const double mid = .5 * (lo + hi); (count(sizing(mid), most) > n ? hi : lo) = mid; }
+        cells = lo;
+      }
+      else {
+        cells = fewest;
+        h = sizing(cells);
+        l = solve(most, 64. * most, [&](double x) { return count(h, x); });
+      }
+      h = sizing(cells);
     }
+  }
   p.edge_length = l;
-  p.number_of_vertices = 0.;
   if(!o.quiet)
-    std::printf("lattice-mesh: shape sizing: %zu samples thinner than %.3g cells, smallest size %.4g (l* %.4g), %.2f s\n",
-                sizing.number_of_samples(), o.cells_across, (std::max)(sizing.min_size(), o.min_edge_length > 0. ? o.min_edge_length : .2 * l),
-                l, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  return sized(l);
+    std::printf("lattice-mesh: shape sizing: %zu samples thinner than %.3g cells of l* %.4g, smallest size %.4g, %.2f s\n",
+                h.number_of_samples(), cells, l, (std::max)(h.min_size(), o.min_edge_length > 0. ? o.min_edge_length : .25 * l),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  return sized(h, l);
 }
 
 template <typename Domain>

@@ -18,6 +18,7 @@
 #include <CGAL/Lattice_mesher_3/insert_delete_particles.h>
 #include <CGAL/Lattice_mesher_3/internal/isotropic_embedding.h>
 #include <CGAL/Lattice_mesher_3/optimize_particles.h>
+#include <CGAL/Lattice_mesher_3/peel_slivers.h>
 #include <CGAL/Lattice_mesher_3/flip_tetrahedra.h>
 #include <CGAL/Lattice_mesher_3/smooth_vertices.h>
 #include <CGAL/Lattice_mesher_3/tetrahedralize_particles.h>
@@ -287,7 +288,8 @@ public:
   }
 
   /// Connects the current particles into a tetrahedral mesh, then improves its worst tetrahedra
-  /// (`flip_tetrahedra()`, `smooth_vertices()`), as the parameters say.
+  /// (`flip_tetrahedra()`, `smooth_vertices()`, `collapse_edges()`), as the parameters say, and
+  /// removes the slivers that lie flat on the boundary (`peel_boundary_slivers()`).
   Mesh tetrahedralize() const
   {
     Lattice_mesher_3::Tetrahedralization_options o;
@@ -339,6 +341,10 @@ public:
       Lattice_mesher_3::collapse_edges(mesh, field_);
       stage("contractions");
     }
+    // what is left below 20 degrees on the boundary is mostly slivers whose four vertices the
+    // surface holds: the flat ones go
+    Lattice_mesher_3::peel_boundary_slivers(mesh, field_);
+    stage("peeling");
     return mesh;
   }
 

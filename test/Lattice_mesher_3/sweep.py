@@ -17,6 +17,7 @@
 # mesh still fails it); a listed model that now passes is reported, so that the list only shrinks.
 #
 #   sweep.py --lattice-mesh BIN --models DIR [--vertices N] [--shard I/N] [--out DIR] [--csv FILE]
+#            [--only a.off,b.off] [--option=--shape-sizing ...]
 
 import argparse
 import csv
@@ -154,7 +155,7 @@ def run_model(args, model):
         if os.path.exists(f):
             os.remove(f)
     cmd = [args.lattice_mesh, model, '--vertices', str(args.vertices), '--threads', '1', '--quiet',
-           '-o', out_mesh, '--stats', out_stats]
+           '-o', out_mesh, '--stats', out_stats] + args.option
     start = time.time()
     try:
         proc = subprocess.run(cmd, capture_output=True, text=True, timeout=args.timeout)
@@ -210,10 +211,14 @@ def main():
     ap.add_argument('--min-angle', type=float, default=10.)
     ap.add_argument('--hausdorff', type=float, default=1.5, help='largest Hausdorff distance, in l*')
     ap.add_argument('--known-failures', help='file of "model: reason" lines')
+    ap.add_argument('--only', help='comma-separated model files to mesh (default: all)')
+    ap.add_argument('--option', action='append', default=[], help='a further lattice-mesh argument (repeat)')
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     i, n = (int(x) for x in args.shard.split('/'))
     models = sorted(f for f in os.listdir(args.models) if f.rsplit('.', 1)[-1].lower() in ('off', 'obj', 'stl', 'ply'))
+    if args.only:
+        models = [m for m in models if m in args.only.split(',')]
     models = models[i::n]
     known = {}
     if args.known_failures:

@@ -5,7 +5,7 @@
 //
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Mesh improvement: flips, worst-element smoothing and edge contractions keep the mesh valid, keep the boundary,
+// Mesh improvement: flips, worst-element smoothing, edge contractions and sliver peeling keep the mesh valid, keep the boundary,
 // and never lower the smallest dihedral angle.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -13,6 +13,7 @@
 #include <CGAL/Lattice_mesher_3/check_mesh.h>
 #include <CGAL/Lattice_mesher_3/collapse_edges.h>
 #include <CGAL/Lattice_mesher_3/flip_tetrahedra.h>
+#include <CGAL/Lattice_mesher_3/peel_slivers.h>
 #include <CGAL/Lattice_mesher_3/smooth_vertices.h>
 #include <CGAL/Lattice_mesher_3/tetrahedralize_particles.h>
 #include <CGAL/Lattice_mesher_traits_3.h>
@@ -263,3 +264,58 @@ TEST(Collapse_edges, KeepsTheBoundaryAndNeverLowersTheWorstAngle)
 }
 
 } // namespace
+
+namespace {
+
+// A positive tetrahedron of `points` (its last two corners swapped if needed).
+std::array<int, 4> positive(const std::vector<Point_3>& p, std::array<int, 4> t)
+{
+  if(CGAL::orientation(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) != CGAL::POSITIVE) std::swap(t[2], t[3]);
+  return t;
+}
+
+// Two tetrahedra under the square p0 p1 p2 p3 (split along p0 p2), apex 4 below, and on top the
+// tetrahedron of the square itself, whose corner p3 is raised by `lift`: a sliver lying on the
+// two lower ones, with its two upper faces on the boundary.
+LM::Tetrahedral_mesh_3<Point_3> capped_pyramid(double lift)
+{
+  LM::Tetrahedral_mesh_3<Point_3> m;
+  m.points = { Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 1, 0), Point_3(0, 1, lift), Point_3(.5, .5, -.7) };
+  m.tets = { positive(m.points, { 0, 1, 2, 4 }), positive(m.points, { 0, 2, 3, 4 }), positive(m.points, { 0, 1, 2, 3 }) };
+  m.boundary_faces = LM::internal::one_tet_faces(m.tets);
+  return m;
+}
+
+} // namespace
+
+// A flat sliver on the boundary goes (the boundary now the other diagonal of the square), the
+// mesh stays valid and its unused vertices go too; a poor tetrahedron that is not flat stays.
+TEST(Peel_boundary_slivers, RemovesFlatBoundarySliversOnly)
+{
+  const LM::Constant_frame_field_3<Traits> field;
+  LM::Tetrahedral_mesh_3<Point_3> flat = capped_pyramid(.02);
+  ASSERT_TRUE(LM::check_tetrahedral_mesh(flat).valid());
+  ASSERT_LT(worst_angle(flat, field), 5.);
+  EXPECT_EQ(LM::peel_boundary_slivers(flat, field), 1u);
+  EXPECT_TRUE(LM::check_tetrahedral_mesh(flat).valid()) << LM::check_tetrahedral_mesh(flat).message;
+  EXPECT_EQ(flat.tets.size(), 2u);
+  EXPECT_GT(worst_angle(flat, field), 20.);
+
+  // p3 raised by 0.25: the capping tetrahedron is poor (13.6 degrees) but not flat (its height
+  // 0.2 of its mean edge), and stays
+  LM::Tetrahedral_mesh_3<Point_3> tall = capped_pyramid(.25);
+  ASSERT_LT(worst_angle(tall, field), 20.);
+  EXPECT_EQ(LM::peel_boundary_slivers(tall, field), 0u);
+  EXPECT_EQ(tall.tets.size(), 3u);
+
+  // the sliver on one tetrahedron under half of it (three faces on the boundary): its removal
+  // leaves p3 in no tetrahedron, and p3 goes
+  LM::Tetrahedral_mesh_3<Point_3> half = capped_pyramid(.02);
+  half.tets.erase(half.tets.begin() + 1);
+  half.boundary_faces = LM::internal::one_tet_faces(half.tets);
+  ASSERT_TRUE(LM::check_tetrahedral_mesh(half).valid());
+  EXPECT_EQ(LM::peel_boundary_slivers(half, field), 1u);
+  EXPECT_TRUE(LM::check_tetrahedral_mesh(half).valid()) << LM::check_tetrahedral_mesh(half).message;
+  EXPECT_EQ(half.points.size(), 4u);
+  EXPECT_EQ(half.tets.size(), 1u);
+}

@@ -246,31 +246,45 @@ private:
 /*!
 \ingroup PkgLatticeMesher3Sizing
 
-Writes, for points of the boundary of `domain`, the size that puts `cells_across` lattice cells
-across the part of the domain there: the thickness, found by marching from the point along the
-inward normal until the domain is left, divided by `cells_across`; and the size that puts one
-cell across the gap in front of it (marching along the outward normal until the domain is met
-again). Points are those of `domain.sample_surface(spacing)`; the marches go no farther than
-`cells_across * max_size` (thicker parts and wider gaps write nothing) in steps of `step`,
-and the crossing is then located to 1/64 of a step. A part thinner than a step (or a point at
-an edge sharper than a right angle, whose inward normal leaves at once) gets `step /
-cells_across`.
+The local thickness of the domain and the gap in front of it at a point of its surface (see
+`thickness_samples()`); -1 where the march found none within its reach.
+*/
+template <typename K>
+struct Thickness_sample_3
+{
+  typename K::Point_3 point;    ///< on the surface
+  typename K::Vector_3 normal;  ///< the unit outward normal there
+  double thickness = -1.;       ///< along the inward normal, to where the domain is left
+  double gap = -1.;             ///< along the outward normal, to where the domain is met again
+};
+
+/*!
+\ingroup PkgLatticeMesher3Sizing
+
+Measures the domain at the points of `domain.sample_surface(spacing)`: the thickness, marching
+from each point along the inward normal until the domain is left, and the gap in front of it,
+marching along the outward normal until the domain is met again; both no farther than `reach`,
+in steps of `step`, the crossing then located to 1/64 of a step. A part thinner than a step (or
+a point near an edge sharper than a right angle, whose inward normal leaves at once) measures a
+step. Points closer than `step / 2` to a feature curve are skipped: their normal is either
+face's, along which the march may run in the plane of the other face. `threads` OpenMP
+threads share the points.
 
 \tparam MeshDomain a model of `LatticeMeshDomain_3`
-\returns the output iterator, past the `std::pair<Point_3, double>` samples written
 */
-template <typename MeshDomain, typename OutputIterator>
-OutputIterator thickness_size_samples(const MeshDomain& domain, double spacing, double step, double max_size,
-                                      double cells_across, int threads, OutputIterator out)
+template <typename MeshDomain>
+std::vector<Thickness_sample_3<typename MeshDomain::Geom_traits> >
+thickness_samples(const MeshDomain& domain, double spacing, double step, double reach, int threads = 1)
 {
-  typedef typename MeshDomain::Geom_traits::Point_3 Point_3;
-  typedef typename MeshDomain::Geom_traits::Vector_3 Vector_3;
-  if(!(spacing > 0.) || !(step > 0.) || !(max_size > 0.) || !(cells_across > 0.))
-    throw std::invalid_argument("thickness_size_samples(): the spacing, the step, the largest size and the cells across must be positive");
+  typedef typename MeshDomain::Geom_traits K;
+  typedef typename K::Point_3 Point_3;
+  typedef typename K::Vector_3 Vector_3;
+  if(!(spacing > 0.) || !(step > 0.) || !(reach > 0.))
+    throw std::invalid_argument("thickness_samples(): the spacing, the step and the reach must be positive");
   std::vector<Point_3> points;
   domain.sample_surface(spacing, std::back_inserter(points));
-  const double reach = cells_across * max_size;
-  std::vector<double> inner(points.size(), -1.), outer(points.size(), -1.);
+  std::vector<Thickness_sample_3<K> > result(points.size());
+  std::vector<char> skipped(points.size(), 0);
   // the distance along `direction` from `p` at which is_inside() first differs from `inside`
   auto march = [&](const Point_3& p, const Vector_3& direction, bool inside) {
     double t = .5 * step;
@@ -282,24 +296,52 @@ OutputIterator thickness_size_samples(const MeshDomain& domain, double spacing, 
       const double m = .5 * (a + b);
       (domain.is_inside(p + m * direction) != inside ? b : a) = m;
     }
-    return b;
+    return (std::max)(b, step);
   };
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
   for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(points.size()); ++i) {
-    // on a sharp curve the normal is either face's, along which the march may run in the
-    // plane of the other face, on the boundary: such a point tells nothing
-    if(domain.number_of_curves() > 0 && domain.project_on_features(points[std::size_t(i)]).squared_distance < .25 * step * step)
+    Thickness_sample_3<K>& r = result[std::size_t(i)];
+    if(domain.number_of_curves() > 0 && domain.project_on_features(points[std::size_t(i)]).squared_distance < .25 * step * step) {
+      skipped[std::size_t(i)] = 1;
       continue;
+    }
     const auto s = domain.project_on_surface(points[std::size_t(i)]);
-    const Vector_3 n = s.direction;
-    inner[std::size_t(i)] = march(s.point, -n, true);
-    outer[std::size_t(i)] = march(s.point, n, false);
+    r.point = s.point;
+    r.normal = s.direction;
+    r.thickness = march(s.point, -s.direction, true);
+    r.gap = march(s.point, s.direction, false);
   }
-  for(std::size_t i = 0; i < points.size(); ++i) {
+  std::size_t kept = 0;
+  for(std::size_t i = 0; i < result.size(); ++i)
+    if(!skipped[i] && (result[i].thickness >= 0. || result[i].gap >= 0.)) result[kept++] = result[i];
+  result.resize(kept);
+  return result;
+}
+
+/*!
+\ingroup PkgLatticeMesher3Sizing
+
+Writes the sizes that the measures of `thickness_samples()` ask for: `cells_across` lattice
+cells across each part (its thickness divided by `cells_across`), written at the surface point
+and every half size along the chord up to its middle, so that the size holds across the part
+and not only at its surface; and one cell across each gap (the gap itself). Sizes at or above
+`max_size` are not written.
+\returns the output iterator, past the `std::pair<Point_3, double>` written
+*/
+template <typename K, typename OutputIterator>
+OutputIterator size_samples(const std::vector<Thickness_sample_3<K> >& measures, double cells_across,
+                            double max_size, OutputIterator out)
+{
+  if(!(cells_across > 0.))
+    throw std::invalid_argument("size_samples(): the number of cells across must be positive");
+  for(const Thickness_sample_3<K>& m : measures) {
     double h = std::numeric_limits<double>::infinity();
-    if(inner[i] >= 0.) h = (std::max)(inner[i], step) / cells_across;
-    if(outer[i] >= 0.) h = (std::min)(h, (std::max)(outer[i], step));
-    if(h < max_size) *out++ = std::make_pair(points[i], h);
+    if(m.thickness >= 0.) h = m.thickness / cells_across;
+    if(m.gap >= 0.) h = (std::min)(h, m.gap);
+    if(!(h < max_size)) continue;
+    *out++ = std::make_pair(m.point, h);
+    if(m.thickness >= 0.)
+      for(double t = .5 * h; t <= .5 * m.thickness; t += .5 * h) *out++ = std::make_pair(m.point - t * m.normal, h);
   }
   return out;
 }
@@ -308,9 +350,10 @@ OutputIterator thickness_size_samples(const MeshDomain& domain, double spacing, 
 \ingroup PkgLatticeMesher3Sizing
 
 The size that follows the shape of `domain` for a lattice edge of about `edge_length`: the
-envelope (`Graded_sizing_field_3`, slope `grading`) of `thickness_size_samples()` taken every
-`edge_length / 2` with steps of `edge_length / 8`, for sizes up to `2 edge_length` (so that the
-field also serves an edge length up to twice the estimate, as a vertex count may need).
+envelope (`Graded_sizing_field_3`, slope `grading`) of the `size_samples()` for `cells_across`
+of the `thickness_samples()` taken every `edge_length / 2` with steps of `edge_length / 8`,
+for sizes up to `2 edge_length` (so that the field also serves an edge length up to twice the
+estimate, as a vertex count may need).
 
 \tparam MeshDomain a model of `LatticeMeshDomain_3`
 */
@@ -321,10 +364,11 @@ shape_sizing_field(const MeshDomain& domain, double edge_length, double cells_ac
   typedef typename MeshDomain::Geom_traits::Point_3 Point_3;
   if(!(edge_length > 0.) || !std::isfinite(edge_length))
     throw std::invalid_argument("shape_sizing_field(): the edge length must be positive and finite");
+  const double largest = 2. * edge_length;
   std::vector<std::pair<Point_3, double> > samples;
-  thickness_size_samples(domain, .5 * edge_length, .125 * edge_length, 2. * edge_length, cells_across, threads,
-                         std::back_inserter(samples));
-  return Graded_sizing_field_3<typename MeshDomain::Geom_traits>(samples, grading, 2. * edge_length);
+  size_samples(thickness_samples(domain, .5 * edge_length, .125 * edge_length, cells_across * largest, threads),
+               cells_across, largest, std::back_inserter(samples));
+  return Graded_sizing_field_3<typename MeshDomain::Geom_traits>(samples, grading, largest);
 }
 
 /*!

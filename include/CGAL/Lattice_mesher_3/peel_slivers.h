@@ -1,0 +1,163 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Lattice_mesher_3 developers
+
+#ifndef CGAL_LATTICE_MESHER_3_PEEL_SLIVERS_H
+#define CGAL_LATTICE_MESHER_3_PEEL_SLIVERS_H
+
+#include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
+#include <CGAL/Lattice_mesher_3/check_mesh.h>
+#include <CGAL/Lattice_mesher_3/mesh_quality.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Lattice_mesher_3 {
+
+/// Settings of `peel_boundary_slivers()`.
+struct Peeling_options
+{
+  /// tetrahedra whose smallest dihedral angle (isotropic space, degrees) is below this are peeled
+  double angle = 20.;
+  /// ... if their smallest height is at most this fraction of their mean edge (isotropic
+  /// space): they are flat, and the boundary moves by that height when they go
+  double flat_ratio = 0.1;
+  /// rounds of peeling: a peeled sliver may expose another
+  int max_rounds = 10;
+};
+
+namespace internal {
+
+// The outward faces of the tetrahedra that are in no other tetrahedron, sorted.
+inline std::vector<std::array<int, 3> > one_tet_faces(const std::vector<std::array<int, 4> >& tets)
+{
+  std::map<Triangle_indices, std::pair<int, Triangle_indices> > faces;   // sorted -> count, outward
+  for(const std::array<int, 4>& t : tets)
+    for(const Triangle_indices& f : outward_faces(t)) {
+      auto& e = faces[sorted_triangle(f)];
+      ++e.first;
+      e.second = f;
+    }
+  std::vector<std::array<int, 3> > result;
+  for(const auto& e : faces) if(e.second.first == 1) result.push_back(e.second.second);
+  std::sort(result.begin(), result.end());
+  return result;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgLatticeMesher3Flips
+
+Removes the slivers that lie flat on the boundary: a tetrahedron with two or three faces on the
+boundary, a smallest dihedral angle below `o.angle` and a smallest height at most `o.flat_ratio`
+times its mean edge (both in the isotropic space of `field`). Such a tetrahedron adds almost no
+volume; what no flip or move of a vertex raises (its vertices held on the surface), removing it
+does, and the boundary moves by its height. Removals that would leave the boundary non-manifold are not made: a round
+removes a set of slivers that share no vertex, and if the mesh is then invalid
+(`check_tetrahedral_mesh()`), tries them one at a time. Vertices that end up in no tetrahedron
+are removed. Returns the number of tetrahedra removed.
+
+\tparam FrameField a model of `FrameField_3`
+*/
+template <typename Point_3, typename FrameField>
+std::size_t peel_boundary_slivers(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field,
+                                  const Peeling_options& o = Peeling_options())
+{
+  typedef internal::Triangle_indices Face;
+  std::size_t removed = 0;
+  for(int round = 0; round < o.max_rounds; ++round) {
+    std::map<Face, int> boundary;   // sorted boundary face -> 1
+    for(const auto& f : mesh.boundary_faces) boundary[internal::sorted_triangle(f)] = 1;
+    // candidates: (angle, tet)
+    std::vector<std::pair<double, std::size_t> > candidates;
+    for(std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      const std::array<int, 4>& v = mesh.tets[t];
+      const std::array<Face, 4> faces = internal::outward_faces(v);
+      int on_boundary = 0;
+      for(const Face& f : faces) on_boundary += boundary.count(internal::sorted_triangle(f)) ? 1 : 0;
+      if(on_boundary < 2 || on_boundary > 3) continue;
+      const std::array<Eigen::Vector3d, 4> q = internal::isotropic_tetrahedron(mesh, field, t);
+      const double angle = smallest_dihedral_angle(q[0], q[1], q[2], q[3]);
+      if(!(angle < o.angle)) continue;
+      // flat: its smallest height (three times its volume over its largest face), by which the
+      // boundary moves when it goes, is a small fraction of its mean edge
+      double mean_edge = 0., largest_face = 0.;
+      for(int i = 0; i < 4; ++i) for(int j = i + 1; j < 4; ++j) mean_edge += (q[i] - q[j]).norm();
+      mean_edge /= 6.;
+      for(int i = 0; i < 4; ++i)
+        largest_face = (std::max)(largest_face, .5 * (q[(i + 2) % 4] - q[(i + 1) % 4]).cross(q[(i + 3) % 4] - q[(i + 1) % 4]).norm());
+      const double volume = std::abs((q[1] - q[0]).cross(q[2] - q[0]).dot(q[3] - q[0])) / 6.;
+      const bool flat = 3. * volume <= o.flat_ratio * mean_edge * largest_face;
+      if(flat) candidates.emplace_back(angle, t);
+    }
+    if(candidates.empty()) break;
+    std::sort(candidates.begin(), candidates.end());
+    // a first batch of slivers that share no vertex
+    std::vector<char> used(mesh.points.size(), 0);
+    std::vector<std::size_t> batch;
+    for(const auto& c : candidates) {
+      const std::array<int, 4>& v = mesh.tets[c.second];
+      if(used[v[0]] || used[v[1]] || used[v[2]] || used[v[3]]) continue;
+      for(int i : v) used[i] = 1;
+      batch.push_back(c.second);
+    }
+    auto without = [&](const std::vector<std::size_t>& gone) {
+      std::vector<char> drop(mesh.tets.size(), 0);
+      for(std::size_t t : gone) drop[t] = 1;
+      Tetrahedral_mesh_3<Point_3> m;
+      m.points = mesh.points;
+      m.vertex_kinds = mesh.vertex_kinds;
+      for(std::size_t t = 0; t < mesh.tets.size(); ++t) if(!drop[t]) m.tets.push_back(mesh.tets[t]);
+      m.boundary_faces = internal::one_tet_faces(m.tets);
+      return m;
+    };
+    Tetrahedral_mesh_3<Point_3> next = without(batch);
+    std::size_t taken = batch.size();
+    if(!check_tetrahedral_mesh(next).valid()) {
+      taken = 0;
+      std::vector<std::size_t> kept;
+      for(std::size_t k = 0; k < batch.size() && k < 64; ++k) {
+        std::vector<std::size_t> trial(kept);
+        trial.push_back(batch[k]);
+        Tetrahedral_mesh_3<Point_3> m = without(trial);
+        if(check_tetrahedral_mesh(m).valid()) { kept = trial; next = std::move(m); }
+      }
+      taken = kept.size();
+      if(taken == 0) break;
+    }
+    mesh = std::move(next);
+    removed += taken;
+  }
+  if(removed > 0) {   // drop the vertices in no tetrahedron
+    std::vector<int> index(mesh.points.size(), -1);
+    Tetrahedral_mesh_3<Point_3> m;
+    for(std::array<int, 4>& t : mesh.tets)
+      for(int& i : t) {
+        if(index[i] < 0) {
+          index[i] = int(m.points.size());
+          m.points.push_back(mesh.points[i]);
+          if(!mesh.vertex_kinds.empty()) m.vertex_kinds.push_back(mesh.vertex_kinds[i]);
+        }
+        i = index[i];
+      }
+    for(std::array<int, 3>& f : mesh.boundary_faces) for(int& i : f) i = index[i];
+    mesh.points.swap(m.points);
+    mesh.vertex_kinds.swap(m.vertex_kinds);
+  }
+  return removed;
+}
+
+} // namespace Lattice_mesher_3
+} // namespace CGAL
+
+#endif // CGAL_LATTICE_MESHER_3_PEEL_SLIVERS_H
