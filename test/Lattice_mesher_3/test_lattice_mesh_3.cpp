@@ -310,4 +310,25 @@ TEST(Lattice_mesh_program, WritesOutputsAndRejectsBadInput)
   }
 }
 
+// A self-intersecting surface (elk: seven pairs of faces cross) meshes, with a warning that
+// counts them, into a valid mesh.
+TEST(Lattice_mesh_program, SelfIntersectingSurfaceMeshesWithAWarning)
+{
+  const std::string dir = ::testing::TempDir();
+  const std::string exe = LATTICE_MESH_EXECUTABLE;
+  const std::string elk = std::string(LATTICE_MESHER_3_DATA_DIR) + "/meshes/elk.off";
+  const std::string out = dir + "/lm_elk.mesh", err = dir + "/lm_elk_err.txt";
+  EXPECT_EQ(std::system((exe + " " + elk + " --vertices 3000 --quiet -o " + out + " 2> " + err).c_str()), 0);
+  std::ifstream es(err);
+  const std::string text((std::istreambuf_iterator<char>(es)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("warning"), std::string::npos) << text;
+  EXPECT_NE(text.find("self-intersects (7 pairs of faces)"), std::string::npos) << text;
+  LM::Tetrahedral_mesh_3<Point_3> mesh;
+  std::ifstream ms(out);
+  LM::read_medit(ms, mesh);
+  const LM::Mesh_validity_report r = LM::check_tetrahedral_mesh(mesh);
+  EXPECT_TRUE(r.valid()) << r.message;
+  EXPECT_GT(mesh.points.size(), 2000u);
+}
+
 } // namespace
