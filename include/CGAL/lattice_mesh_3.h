@@ -17,6 +17,7 @@
 
 #include <CGAL/Lattice_particle_mesher_3.h>
 #include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
+#include <CGAL/Lattice_mesher_3/sizing_fields.h>
 
 #include <functional>
 #include <stdexcept>
@@ -29,6 +30,36 @@ namespace internal {
 // Visitors come by value (copied into the parameter pack) or as std::ref(v).
 template <class T> T& unwrap(T& t) { return t; }
 template <class T> T& unwrap(std::reference_wrapper<T>& t) { return t.get(); }
+
+template <typename Traits, typename MeshDomain, typename FrameField, typename Visitor>
+Tetrahedral_mesh_3<typename Traits::Point_3>
+run_lattice_mesher(const MeshDomain& domain, const FrameField& field, const Lattice_mesher_parameters& p, Visitor& visitor)
+{
+  Lattice_particle_mesher_3<Traits, MeshDomain, FrameField> mesher(domain, field, p);
+  mesher.optimize(visitor);
+  return mesher.tetrahedralize();
+}
+
+// The largest edge l* at which `field` scaled by `size` (Sized_frame_field_3) gives about
+// p.number_of_vertices vertices: the count falls as l* grows, from the estimate without the size
+// on (the size only adds vertices).
+template <typename Traits, typename MeshDomain, typename FrameField, typename Size>
+double sized_edge_length(const MeshDomain& domain, const FrameField& field, const Size& size, Lattice_mesher_parameters p)
+{
+  typedef Sized_frame_field_3<FrameField, Size> Sized;
+  const double n = p.number_of_vertices;
+  const double estimate = Lattice_particle_mesher_3<Traits, MeshDomain, FrameField>(domain, field, p).edge_length();
+  p.number_of_vertices = 0.;
+  auto count = [&](double l) {
+    const Sized sized(field, size, l);
+    p.edge_length = l;
+    return Lattice_particle_mesher_3<Traits, MeshDomain, Sized>(domain, sized, p).expected_vertices(l);
+  };
+  double lo = estimate, hi = estimate;
+  while(count(hi) > n && hi < 1e6 * estimate) { lo = hi; hi *= 2.; }
+  for(int it = 0; it < 40; ++it) { const double mid = .5 * (lo + hi); (count(mid) > n ? lo : hi) = mid; }
+  return hi;
+}
 } // namespace internal
 } // namespace Lattice_mesher_3
 
@@ -106,6 +137,14 @@ them (`tetrahedralize_particles()`).
     \cgalParamType{int}
     \cgalParamDefault{2}
   \cgalParamNEnd
+  \cgalParamNBegin{size_field}
+    \cgalParamDescription{the largest edge length h(x) at each point, a graded function (slope well below 1, e.g.
+      0.3; a `Lattice_mesher_3::Graded_sizing_field_3` is); the lattice cube shrinks to h(x) where h(x) is
+      below l*, keeping the directions of the field (`Lattice_mesher_3::Sized_frame_field_3`), and l* is the
+      largest edge; with `number_of_vertices`, l* is chosen so that the sized mesh has about that many}
+    \cgalParamType{a callable `double(const Point_3&)`, thread-safe}
+    \cgalParamDefault{none: the edge is l* everywhere}
+  \cgalParamNEnd
   \cgalParamNBegin{visitor}
     \cgalParamDescription{progress: `round_done(const Lattice_mesher_3::Round_report&)` after each round;
                           pass `std::ref(v)` to keep the state in `v`}
@@ -169,9 +208,19 @@ lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
     internal_np::visitor_t, NamedParameters, LM::Null_lattice_mesher_visitor>::type Visitor;
   Visitor visitor = choose_parameter<Visitor>(get_parameter(np, internal_np::visitor));
 
-  Lattice_particle_mesher_3<Traits, MeshDomain, FrameField> mesher(domain, field, p);
-  mesher.optimize(LM::internal::unwrap(visitor));
-  return mesher.tetrahedralize();
+  typedef typename internal_np::Lookup_named_param_def<
+    internal_np::size_field_t, NamedParameters, internal_np::Param_not_found>::type Size;
+  if constexpr(std::is_same<Size, internal_np::Param_not_found>::value)
+    return LM::internal::run_lattice_mesher<Traits>(domain, field, p, LM::internal::unwrap(visitor));
+  else {
+    const Size size = get_parameter(np, internal_np::size_field);
+    if(has_count) {
+      p.edge_length = LM::internal::sized_edge_length<Traits>(domain, field, size, p);
+      p.number_of_vertices = 0.;
+    }
+    const LM::Sized_frame_field_3<FrameField, Size> sized(field, size, p.edge_length);
+    return LM::internal::run_lattice_mesher<Traits>(domain, sized, p, LM::internal::unwrap(visitor));
+  }
 }
 
 /*!

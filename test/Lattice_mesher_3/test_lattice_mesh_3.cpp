@@ -158,6 +158,34 @@ TEST(Lattice_mesh_3, NamedParametersAndDeterminism)
   EXPECT_EQ(with_seed(cube(), 7u), with_seed(cube(), 8u));
 }
 
+// A size given by the user: h = 0.06 + 0.25 (x - 0.1) over the cube [0.1, 1.1]^3 (slope 0.25),
+// capped by l* = 0.25: the vertices crowd where h is small, about as the density h^-3 says, and
+// with a vertex count l* is chosen for it.
+TEST(Lattice_mesh_3, SizeFieldGradesTheMesh)
+{
+  const Field field;
+  auto h = [](const Point_3& p) { return .06 + .25 * (p.x() - .1); };
+  auto halves = [](const LM::Tetrahedral_mesh_3<Point_3>& m) {
+    std::size_t left = 0;
+    for(const Point_3& p : m.points) left += p.x() < .6;
+    return std::make_pair(double(left), double(m.points.size() - left));
+  };
+  const auto sized = CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(.25).size_field(h).number_of_threads(2));
+  const LM::Mesh_validity_report r = LM::check_tetrahedral_mesh(sized);
+  EXPECT_TRUE(r.valid()) << r.message;
+  const auto n = halves(sized);
+  // h^-3 integrated over each half: 11.9 times as many on the left (h from 0.06 to 0.185 against
+  // 0.185 to 0.25, then the cap)
+  EXPECT_GT(n.first, 6. * n.second) << n.first << " left, " << n.second << " right";
+  EXPECT_LT(n.first, 16. * n.second) << n.first << " left, " << n.second << " right";
+  // 1,500 vertices: more than h alone gives (about 1,190 at l* = 0.25), so l* is the cap where
+  // h would be larger and the left half is still the denser
+  const auto counted = CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::number_of_vertices(1500).size_field(h).number_of_threads(2));
+  EXPECT_TRUE(LM::check_tetrahedral_mesh(counted).valid());
+  EXPECT_NEAR(double(counted.points.size()), 1500., 225.);
+  EXPECT_GT(halves(counted).first, 2. * halves(counted).second) << halves(counted).first << " left, " << halves(counted).second << " right";
+}
+
 TEST(Lattice_mesh_3, SurfaceMeshOverloadTakesTheFeatureAngle)
 {
   const Field field;
