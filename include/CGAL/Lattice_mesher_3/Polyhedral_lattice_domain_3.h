@@ -244,6 +244,20 @@ private:
                                   mesh.point(mesh.target(mesh.next(h))));
   }
 
+  // points just behind and just in front of the centroid of face f (1e-6 of its size along its
+  // normal), where the winding number tells the sides of the face apart; twice the centroid for
+  // a degenerate face
+  static std::pair<Point_3, Point_3> face_sides(const Surface_mesh& mesh, Face_index f)
+  {
+    const typename K::Triangle_3 t = triangle(mesh, f);
+    const Vector_3 normal = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+    const double length = std::sqrt(CGAL::to_double(normal.squared_length()));
+    const Point_3 c = CGAL::centroid(t);
+    if(!(length > 0.)) return { c, c };
+    const Vector_3 step = normal * (1e-6 / std::sqrt(length));
+    return { c - step, c + step };
+  }
+
   static std::vector<typename K::Triangle_3> triangles(const Surface_mesh& mesh)
   {
     std::vector<typename K::Triangle_3> result;
@@ -292,13 +306,8 @@ private:
     for(std::size_t c : order) {
       if(meets_another[c] || n == 1) continue;
       // a point just outside one of its faces, where the component itself winds 0 times
-      const Face_index f = faces_of[c].front();
-      const typename K::Triangle_3 t = triangle(mesh, f);
-      const Vector_3 normal = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
-      const double length = std::sqrt(CGAL::to_double(normal.squared_length()));
-      if(!(length > 0.)) continue;
-      const Point_3 outside = CGAL::centroid(t) + normal * (1e-6 / std::sqrt(length));
-      if((*winding)(outside) < 1) continue;
+      const std::pair<Point_3, Point_3> sides = face_sides(mesh, faces_of[c].front());
+      if(sides.first == sides.second || (*winding)(sides.second) < 1) continue;
       PMP::reverse_face_orientations(faces_of[c], mesh);
       winding.reset(new Winding_number(triangles(mesh)));
     }
@@ -431,12 +440,9 @@ private:
       if(self_intersections == 0) return part;
       std::vector<Face_index> buried;
       for(Face_index f : part.faces()) {
-        const typename K::Triangle_3 t = triangle(part, f);
-        const Vector_3 normal = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
-        const double length = std::sqrt(CGAL::to_double(normal.squared_length()));
-        if(!(length > 0.)) { buried.push_back(f); continue; }
-        const Vector_3 step = normal * (1e-6 / std::sqrt(length));   // 1e-6 of the face's size
-        const bool in = winding(CGAL::centroid(t) - step) >= 1, out = winding(CGAL::centroid(t) + step) >= 1;
+        const std::pair<Point_3, Point_3> sides = face_sides(part, f);
+        if(sides.first == sides.second) { buried.push_back(f); continue; }
+        const bool in = winding(sides.first) >= 1, out = winding(sides.second) >= 1;
         if(in == out) buried.push_back(f);
         else flipped[f] = out;
       }

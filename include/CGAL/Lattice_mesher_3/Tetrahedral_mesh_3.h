@@ -54,6 +54,32 @@ struct Tetrahedral_mesh_3
   std::vector<Particle_kind> vertex_kinds;
 };
 
+namespace internal {
+
+// Drops the vertices flagged in `removed`, which no tetrahedron or boundary face uses any more,
+// keeping the order of the others, and renumbers the tetrahedra and the boundary faces.
+template <typename Point_3>
+void remove_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const std::vector<char>& removed)
+{
+  std::vector<int> index(mesh.points.size(), -1);
+  std::size_t kept = 0;
+  for(std::size_t v = 0; v < mesh.points.size(); ++v)
+    if(!removed[v]) {
+      index[v] = int(kept);
+      mesh.points[kept] = mesh.points[v];
+      if(!mesh.vertex_kinds.empty()) mesh.vertex_kinds[kept] = mesh.vertex_kinds[v];
+      ++kept;
+    }
+  mesh.points.resize(kept);
+  if(!mesh.vertex_kinds.empty()) mesh.vertex_kinds.resize(kept);
+  for(std::array<int, 4>& t : mesh.tets)
+    for(int& v : t) v = index[v];
+  for(std::array<int, 3>& f : mesh.boundary_faces)
+    for(int& v : f) v = index[v];
+}
+
+} // namespace internal
+
 } // namespace Lattice_mesher_3
 } // namespace CGAL
 

@@ -194,26 +194,11 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
   }
   if(collapses == 0) return 0;
 
-  std::vector<int> index(mesh.points.size(), -1);
-  std::size_t kept = 0;
-  for(std::size_t v = 0; v < mesh.points.size(); ++v)
-    if(!removed[v]) {
-      index[v] = int(kept);
-      mesh.points[kept] = mesh.points[v];
-      mesh.vertex_kinds[kept] = mesh.vertex_kinds[v];
-      ++kept;
-    }
-  mesh.points.resize(kept);
-  mesh.vertex_kinds.resize(kept);
   std::size_t live = 0;
   for(std::size_t s = 0; s < mesh.tets.size(); ++s)
-    if(!dead[s]) {
-      for(int& v : mesh.tets[s]) v = index[v];
-      mesh.tets[live++] = mesh.tets[s];
-    }
+    if(!dead[s]) mesh.tets[live++] = mesh.tets[s];
   mesh.tets.resize(live);
-  for(std::array<int, 3>& f : mesh.boundary_faces)
-    for(int& v : f) v = index[v];
+  internal::remove_vertices(mesh, removed);
   return collapses;
 }
 

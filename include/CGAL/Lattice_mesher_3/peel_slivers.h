@@ -139,20 +139,10 @@ std::size_t peel_boundary_slivers(Tetrahedral_mesh_3<Point_3>& mesh, const Frame
     removed += taken;
   }
   if(removed > 0) {   // drop the vertices in no tetrahedron
-    std::vector<int> index(mesh.points.size(), -1);
-    Tetrahedral_mesh_3<Point_3> m;
-    for(std::array<int, 4>& t : mesh.tets)
-      for(int& i : t) {
-        if(index[i] < 0) {
-          index[i] = int(m.points.size());
-          m.points.push_back(mesh.points[i]);
-          if(!mesh.vertex_kinds.empty()) m.vertex_kinds.push_back(mesh.vertex_kinds[i]);
-        }
-        i = index[i];
-      }
-    for(std::array<int, 3>& f : mesh.boundary_faces) for(int& i : f) i = index[i];
-    mesh.points.swap(m.points);
-    mesh.vertex_kinds.swap(m.vertex_kinds);
+    std::vector<char> unused(mesh.points.size(), 1);
+    for(const std::array<int, 4>& t : mesh.tets)
+      for(int i : t) unused[i] = 0;
+    internal::remove_vertices(mesh, unused);
   }
   return removed;
 }
