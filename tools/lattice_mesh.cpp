@@ -12,9 +12,11 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Lattice_particle_mesher_3.h>
+#include <CGAL/lattice_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/Discrete_frame_field_3.h>
 #include <CGAL/Lattice_mesher_3/IO/frame_field.h>
 #include <CGAL/Lattice_mesher_3/IO/medit.h>
+#include <CGAL/Lattice_mesher_3/IO/sizing_field.h>
 #include <CGAL/Lattice_mesher_3/IO/vtu.h>
 #include <CGAL/Lattice_mesher_3/Implicit_lattice_domain_3.h>
 #include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
@@ -23,6 +25,7 @@
 #include <CGAL/Lattice_mesher_3/sizing_fields.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -50,7 +53,7 @@ static const char* usage =
   "                    [--field identity|rotation-y|fig8|fig9|FILE [--field-data FILE]]\n"
   "                    [--feature-angle DEG] [--seed S] [--threads N] [--coarse-levels K]\n"
   "                    [--max-rounds R] [--no-flips] [--smoothing-rounds N] [--quiet]\n"
-  "                    [--shape-sizing [--cells-across C] [--grading G] [--min-edge-length H]]\n"
+  "                    [--size-field FILE] [--cells-across C] [--grading G] [--min-edge-length H]\n"
   "                    -o OUT.mesh [--vtu OUT.vtu] [--stats OUT.json]\n"
   "       lattice-mesh [INPUT | --domain ...] [--field ...] --write-field OUT.txt --field-spacing H\n"
   "  INPUT            closed triangle surface (OFF, OBJ, STL, PLY)\n"
@@ -71,11 +74,17 @@ static const char* usage =
   "  --write-field    write the field, sampled on a grid of spacing H over the domain's bounding\n"
   "                   box, as a text file of samples, and exit\n"
   "  --feature-angle  sharp-edge threshold in degrees (default 60)\n"
-  "  --shape-sizing   the size follows the shape: where the domain is thinner than C l* (default\n"
-  "                   C = 3), the edge shrinks so that C cells fit across it, and where a gap is\n"
-  "                   narrower than l*, to the gap; the size changes by at most G per unit length\n"
-  "                   (default 0.3) and is never below H (default l*/5); --edge-length and\n"
-  "                   --vertices give l*, the largest edge\n"
+  "  --size-field     sizes (the largest edge) given at points: a file of lines 'x y z h', or a\n"
+  "                   Medit X.mesh whose vertices carry the sizes of X.sol (one scalar a vertex,\n"
+  "                   as MMG writes them); the size is the largest function below them that\n"
+  "                   changes by at most G per unit length (--grading), and where the size that\n"
+  "                   follows the shape is smaller, that one\n"
+  "  --cells-across   the size follows the shape: where the domain is thinner than C l* (default\n"
+  "                   C = 2; 0: l* everywhere), the edge shrinks so that C cells fit across it,\n"
+  "                   and where a gap is narrower than l*, to the gap; the size changes by at most\n"
+  "                   G per unit length (--grading, default 0.3) and is never below H\n"
+  "                   (--min-edge-length, default l*/4); --edge-length and --vertices give l*,\n"
+  "                   the largest edge\n"
   "  --no-flips, --smoothing-rounds N\n"
   "                   connectivity flips and rounds of worst-element smoothing and edge\n"
   "                   contractions after the tetrahedralization (default: flips on, 2 rounds;\n"
@@ -83,10 +92,10 @@ static const char* usage =
 
 struct Options
 {
-  std::string input, domain, lattice = "bcc", field = "identity", field_data, write_field, out, vtu, stats;
+  std::string input, domain, lattice = "bcc", field = "identity", field_data, write_field, out, vtu, stats, size_field;
   double edge_length = 0., vertices = 0., feature_angle = 60., field_spacing = 0.;
-  bool shape_sizing = false;
-  double cells_across = 3., grading = .3, min_edge_length = 0.;
+  double cells_across = LM::internal::Shape_sizing_parameters().cells_across;
+  double grading = LM::internal::Shape_sizing_parameters().grading, min_edge_length = 0.;
   unsigned int seed = 0;
   int threads = 1, coarse_levels = -1, max_rounds = -1;
   bool quiet = false, flip = true;
@@ -117,7 +126,7 @@ static Options parse(int argc, char** argv)
     else if(a == "--stats") o.stats = args.value(a);
     else if(a == "--quiet") o.quiet = true;
     else if(a == "--no-flips") o.flip = false;
-    else if(a == "--shape-sizing") o.shape_sizing = true;
+    else if(a == "--size-field") o.size_field = args.value(a);
     else if(a == "--cells-across") o.cells_across = args.number(a);
     else if(a == "--grading") o.grading = args.number(a);
     else if(a == "--min-edge-length") o.min_edge_length = args.number(a);
@@ -140,8 +149,8 @@ static Options parse(int argc, char** argv)
   if(o.vertices != 0. && !(o.vertices >= 4.))
     throw std::invalid_argument("--vertices must be at least 4");
   LM::lattice_type_from_name(o.lattice);   // validates the name
-  if(!(o.cells_across >= 1.) || !std::isfinite(o.cells_across))
-    throw std::invalid_argument("--cells-across must be at least 1");
+  if(!(o.cells_across == 0. || o.cells_across >= 1.) || !std::isfinite(o.cells_across))
+    throw std::invalid_argument("--cells-across must be 0 or at least 1");
   if(!(o.grading > 0.) || !std::isfinite(o.grading))
     throw std::invalid_argument("--grading must be positive");
   if(!(o.min_edge_length >= 0.) || !std::isfinite(o.min_edge_length))
@@ -194,68 +203,31 @@ struct Progress
   }
 };
 
-// The field scaled by the size that follows the shape (`LM::shape_sizing_field()`), and p's
-// edge length: given, or for a vertex count, the largest edge l* and the cells across C that
-// give that count. The thin parts' vertices are paid for by the rest: l* may grow by a quarter
-// over its estimate without sizing; past that, fewer cells fit across the thin parts (C down to
-// 1.5), and only then does l* grow further.
+// The field scaled by the size that follows the shape, and p's edge length (the largest edge).
 template <typename Domain>
 static Field shape_sized_field(const Domain& domain, const Field& field, LM::Lattice_mesher_parameters& p, const Options& o)
 {
-  typedef CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> Mesher;
-  typedef LM::Graded_sizing_field_3<K> Sizing;
   const auto start = std::chrono::steady_clock::now();
-  const double estimate = Mesher(domain, field, p).edge_length();
-  const double n = p.number_of_vertices;
-  p.number_of_vertices = 0.;
-  const auto measures = LM::thickness_samples(domain, .5 * estimate, .125 * estimate, 2. * o.cells_across * estimate, o.threads);
-  auto sizing = [&](double cells) {
-    std::vector<std::pair<Point_3, double> > samples;
-    LM::size_samples(measures, cells, 2. * estimate, std::back_inserter(samples));
-    return Sizing(samples, o.grading, 2. * estimate);
-  };
-  auto sized = [&](const Sizing& h, double l) {
-    const LM::Sized_frame_field_3<Field, Sizing> f(field, h, l, o.min_edge_length > 0. ? o.min_edge_length : .25 * l);
-    return Field([f](const Point_3& x) { return f.frame(x); });
-  };
-  auto count = [&](const Sizing& h, double l) {
-    const Field f = sized(h, l);
-    LM::Lattice_mesher_parameters q = p;
-    q.edge_length = l;
-    return Mesher(domain, f, q).expected_vertices(l);
-  };
-  // the largest x in [lo, hi] with f(x) <= n, f decreasing in x (or increasing, with `up`)
-  auto solve = [&](double lo, double hi, const auto& f) {
-    for(int it = 0; it < 40; ++it) { const double mid = .5 * (lo + hi); (f(mid) > n ? lo : hi) = mid; }
-    return hi;
-  };
-  double l = o.edge_length > 0. ? o.edge_length : estimate, cells = o.cells_across;
-  Sizing h = sizing(cells);
-  if(n > 0. && h.number_of_samples() > 0) {
-    const double most = 1.25 * estimate;
-    if(count(h, most) <= n) l = solve(estimate, most, [&](double x) { return count(h, x); });
-    else {
-      l = most;
-      const double fewest = (std::min)(1.5, o.cells_across);
-      if(count(sizing(fewest), most) <= n) {   // cells across: count increases with them
-        double lo = fewest, hi = o.cells_across;
-        for(int it = 0; it < 12; ++it) { const double mid = .5 * (lo + hi); (count(sizing(mid), most) > n ? hi : lo) = mid; }
-        cells = lo;
-      }
-      else {
-        cells = fewest;
-        h = sizing(cells);
-        l = solve(most, 64. * most, [&](double x) { return count(h, x); });
-      }
-      h = sizing(cells);
-    }
+  LM::internal::Shape_sizing_parameters s;
+  s.cells_across = o.cells_across;
+  s.grading = o.grading;
+  s.min_edge_length = o.min_edge_length;
+  LM::internal::Shape_sizing_report report;
+  // the user's sizes: the envelope of the file's samples
+  std::function<double(const Point_3&)> user = LM::internal::Unbounded_size();
+  if(!o.size_field.empty()) {
+    const LM::Graded_sizing_field_3<K> given(LM::read_size_samples<K>(o.size_field), o.grading, HUGE_VAL);
+    if(!o.quiet)
+      std::printf("lattice-mesh: size field '%s': %zu samples, smallest size %.6g\n", o.size_field.c_str(),
+                  given.number_of_samples(), given.min_size());
+    user = given;
   }
-  p.edge_length = l;
-  if(!o.quiet)
+  const auto sized = LM::internal::sized_field<Traits>(domain, field, user, p, s, &report);
+  if(!o.quiet && o.cells_across > 0.)
     std::printf("lattice-mesh: shape sizing: %zu samples thinner than %.3g cells of l* %.4g, smallest size %.4g, %.2f s\n",
-                h.number_of_samples(), cells, l, (std::max)(h.min_size(), o.min_edge_length > 0. ? o.min_edge_length : .25 * l),
+                report.samples, report.cells_across, p.edge_length, report.smallest_size,
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  return sized(h, l);
+  return Field([sized](const Point_3& x) { return sized.frame(x); });
 }
 
 template <typename Domain>
@@ -281,7 +253,7 @@ static int run(const Domain& domain, const Field_choice& choice, const Options& 
   p.smoothing_rounds = o.smoothing_rounds;
   p.edge_length = o.edge_length;
   p.number_of_vertices = o.vertices;
-  const Field field = o.shape_sizing ? shape_sized_field(domain, choice.field, p, o) : choice.field;
+  const Field field = shape_sized_field(domain, choice.field, p, o);
   Mesher mesher(domain, field, p);
   if(!o.quiet)
     std::printf("lattice-mesh: %s lattice, l* = %.6g, about %.0f vertices expected, %d coarse level(s), %d thread(s)\n",

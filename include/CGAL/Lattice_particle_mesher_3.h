@@ -338,7 +338,10 @@ public:
       worst.worst_angle = 45.;
       worst.worst_weight = 50.;
       smooth_and_flip(worst);
-      Lattice_mesher_3::collapse_edges(mesh, field_);
+      // and the slivers of short boundary edges, which the surface holds
+      Lattice_mesher_3::Collapse_options co;
+      co.boundary_angle = 20.;
+      Lattice_mesher_3::collapse_edges(mesh, field_, co);
       stage("contractions");
     }
     // what is left below 20 degrees on the boundary is mostly slivers whose four vertices the
@@ -362,10 +365,13 @@ public:
 
   /// Number of vertices expected at edge length `l`: the lattice density times the
   /// isotropic volume, plus the boundary and feature layers (exact for a lattice-aligned cube).
-  double expected_vertices(double l) const
+  double expected_vertices(double l) const { return expected_vertices(l, det_b_samples().mean); }
+
+  /// The same for another field of the same domain, whose |det B| has mean `mean_det_b` over it.
+  double expected_vertices(double l, double mean_det_b) const
   {
-    const double scale = std::cbrt(det_b_samples().mean);   // isotropic length per unit length
-    return lattice_.density * isotropic_volume() / (l * l * l)
+    const double scale = std::cbrt(mean_det_b);   // isotropic length per unit length
+    return lattice_.density * domain_.volume() * mean_det_b / (l * l * l)
          + lattice_.area_factor * domain_.area() * scale * scale / (l * l)
          + lattice_.length_factor * domain_.curves_length() * scale / l
          + double(domain_.corners().size());
@@ -458,12 +464,22 @@ private:
     return Schedule{false, 5, 5, 30, 30, 5};
   }
 
-  // Replaces the particles by a fixed one at every corner of the domain.
+  // Replaces the particles by a fixed one at every corner of the domain but those closer than
+  // l*/2 (isotropic) to one already taken: fixed particles that close (the corners of a coarse
+  // or noisy surface, bull: 703 of 1838 vertices) only make short edges and slivers that nothing
+  // can lengthen.
   void start_at_corners()
   {
+    using Lattice_mesher_3::internal::to_eigen;
     particles_.clear();
-    for(std::size_t c = 0; c < domain_.corners().size(); ++c)
-      particles_.push_back(domain_.corners()[c], Lattice_mesher_3::Particle_kind::FIXED, int(c));
+    for(std::size_t c = 0; c < domain_.corners().size(); ++c) {
+      const Point_3& p = domain_.corners()[c];
+      const Eigen::Matrix3d b = Lattice_mesher_3::internal::isotropic_map(field_.frame(p), p);
+      bool crowded = false;
+      for(std::size_t k = 0; k < particles_.size() && !crowded; ++k)
+        crowded = (b * (to_eigen(particles_.points[k]) - to_eigen(p))).norm() < .5 * p_.edge_length;
+      if(!crowded) particles_.push_back(p, Lattice_mesher_3::Particle_kind::FIXED, int(c));
+    }
   }
 
   [[noreturn]] static void cannot_place_particles()

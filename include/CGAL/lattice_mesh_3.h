@@ -19,7 +19,9 @@
 #include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
 #include <CGAL/Lattice_mesher_3/sizing_fields.h>
 
+#include <cmath>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <type_traits>
 
@@ -40,25 +42,122 @@ run_lattice_mesher(const MeshDomain& domain, const FrameField& field, const Latt
   return mesher.tetrahedralize();
 }
 
-// The largest edge l* at which `field` scaled by `size` (Sized_frame_field_3) gives about
-// p.number_of_vertices vertices: the count falls as l* grows, from the estimate without the size
-// on (the size only adds vertices).
-template <typename Traits, typename MeshDomain, typename FrameField, typename Size>
-double sized_edge_length(const MeshDomain& domain, const FrameField& field, const Size& size, Lattice_mesher_parameters p)
+// No size of the user's.
+struct Unbounded_size
 {
+  template <typename Point_3> double operator()(const Point_3&) const { return HUGE_VAL; }
+};
+
+// The size lattice_mesh_3() meshes with: the user's, and the size that follows the shape (never
+// below `floor`) where it asks for one, the smaller of the two.
+template <typename K, typename UserSize>
+struct Combined_size_3
+{
+  std::shared_ptr<const UserSize> user;
+  std::shared_ptr<const Graded_sizing_field_3<K> > shape;   // none: no part is thin
+  double floor = 0.;
+
+  double operator()(const typename K::Point_3& p) const
+  {
+    const double u = (*user)(p);
+    return shape ? (std::min)(u, (std::max)((*shape)(p), floor)) : u;
+  }
+};
+
+// The size that follows the shape: `cells_across` C (0: none), `grading` G, `min_edge_length`
+// H (0: l*/4).
+struct Shape_sizing_parameters
+{
+  double cells_across = 2., grading = .3, min_edge_length = 0.;
+};
+
+// What the sizing did: the samples of the shape's size, the cells across and the smallest size.
+struct Shape_sizing_report
+{
+  std::size_t samples = 0;
+  double cells_across = 0., smallest_size = 0.;
+};
+
+// `field` scaled by the user's size and the size that follows the shape of `domain`, and
+// p.edge_length (l*, the largest edge): given, or for p.number_of_vertices the l* and the cells
+// across that give about that count. The thin parts' vertices are paid for by the rest: l* may
+// grow by a quarter over its estimate without the shape's size; past that, fewer cells fit
+// across the thin parts (C down to 1.5), and only then does l* grow further.
+template <typename Traits, typename MeshDomain, typename FrameField, typename UserSize>
+Sized_frame_field_3<FrameField, Combined_size_3<typename MeshDomain::Geom_traits, UserSize> >
+sized_field(const MeshDomain& domain, const FrameField& field, const UserSize& user, Lattice_mesher_parameters& p,
+            const Shape_sizing_parameters& s, Shape_sizing_report* report = nullptr)
+{
+  typedef typename MeshDomain::Geom_traits K;
+  typedef Combined_size_3<K, UserSize> Size;
   typedef Sized_frame_field_3<FrameField, Size> Sized;
+  typedef Graded_sizing_field_3<K> Shape;
   const double n = p.number_of_vertices;
-  const double estimate = Lattice_particle_mesher_3<Traits, MeshDomain, FrameField>(domain, field, p).edge_length();
   p.number_of_vertices = 0.;
-  auto count = [&](double l) {
-    const Sized sized(field, size, l);
-    p.edge_length = l;
-    return Lattice_particle_mesher_3<Traits, MeshDomain, Sized>(domain, sized, p).expected_vertices(l);
+  auto floor = [&](double l) { return s.min_edge_length > 0. ? s.min_edge_length : .25 * l; };
+  auto sized = [&](Size h, double l) { h.floor = floor(l); return Sized(field, h, l); };
+  // the count of the field scaled by h at l, from |det B| at fixed inside points: drawn once, they
+  // spare the fit's hundred counts their inside tests
+  typedef Lattice_particle_mesher_3<Traits, MeshDomain, FrameField> Mesher;
+  const std::vector<typename K::Point_3> inside = internal::inside_samples(domain, 4096);
+  Lattice_mesher_parameters q = p;
+  q.number_of_vertices = n;
+  const Mesher mesher(domain, field, q);
+  auto count = [&](const Size& h, double l) { return mesher.expected_vertices(l, internal::det_b_at(inside, sized(h, l)).mean); };
+  // the largest l from lo on with count(h, l) <= n: the count falls as l grows
+  auto solve = [&](const Size& h, double lo, double hi) {
+    while(count(h, hi) > n && hi < 1e6 * lo) { lo = hi; hi *= 2.; }
+    for(int it = 0; it < 40; ++it) { const double mid = .5 * (lo + hi); (count(h, mid) > n ? lo : hi) = mid; }
+    return hi;
   };
-  double lo = estimate, hi = estimate;
-  while(count(hi) > n && hi < 1e6 * estimate) { lo = hi; hi *= 2.; }
-  for(int it = 0; it < 40; ++it) { const double mid = .5 * (lo + hi); (count(mid) > n ? lo : hi) = mid; }
-  return hi;
+  const std::shared_ptr<const UserSize> user_size = std::make_shared<const UserSize>(user);
+  Size size{ user_size, nullptr, 0. };
+  double l = p.edge_length;
+  if(n > 0.) {
+    l = mesher.edge_length();
+    if(!std::is_same<UserSize, Unbounded_size>::value) l = solve(size, l, l);
+  }
+  double cells = s.cells_across;
+  if(cells > 0.) {
+    const double estimate = l;
+    // sizes up to twice the estimate, so that they also serve the l* of the fit: thicknesses up
+    // to C times that and gaps up to that, in steps of l*/4 (a thinner part measures a step,
+    // whose size is below the smallest, l*/4)
+    const auto measures = thickness_samples(domain, .5 * estimate, .25 * estimate, 2. * cells * estimate, 2. * estimate, p.threads);
+    auto shape = [&](double c) -> std::shared_ptr<const Shape> {
+      std::vector<std::pair<typename K::Point_3, double> > samples;
+      size_samples(measures, c, 2. * estimate, std::back_inserter(samples));
+      if(samples.empty()) return nullptr;
+      return std::make_shared<const Shape>(samples, s.grading, 2. * estimate);
+    };
+    auto with = [&](double c) { return Size{ user_size, shape(c), 0. }; };
+    size = with(cells);
+    if(n > 0. && size.shape) {
+      const double most = 1.25 * estimate;
+      if(count(size, most) <= n) l = solve(size, estimate, most);
+      else {
+        l = most;
+        const double fewest = (std::min)(1.5, cells);
+        if(count(with(fewest), most) <= n) {   // the count grows with the cells across
+          double lo = fewest, hi = cells;
+          for(int it = 0; it < 6; ++it) { const double mid = .5 * (lo + hi); (count(with(mid), most) > n ? hi : lo) = mid; }
+          cells = lo;
+        }
+        else {
+          cells = fewest;
+          l = solve(with(cells), most, most);
+        }
+        size = with(cells);
+      }
+    }
+  }
+  p.edge_length = l;
+  if(report) {
+    report->samples = size.shape ? size.shape->number_of_samples() : 0;
+    report->cells_across = cells;
+    report->smallest_size = size.shape ? (std::max)(size.shape->min_size(), floor(l)) : l;
+  }
+  return sized(size, l);
 }
 } // namespace internal
 } // namespace Lattice_mesher_3
@@ -141,9 +240,29 @@ them (`tetrahedralize_particles()`).
     \cgalParamDescription{the largest edge length h(x) at each point, a graded function (slope well below 1, e.g.
       0.3; a `Lattice_mesher_3::Graded_sizing_field_3` is); the lattice cube shrinks to h(x) where h(x) is
       below l*, keeping the directions of the field (`Lattice_mesher_3::Sized_frame_field_3`), and l* is the
-      largest edge; with `number_of_vertices`, l* is chosen so that the sized mesh has about that many}
+      largest edge; with `number_of_vertices`, l* is chosen so that the sized mesh has about that many;
+      where the size that follows the shape (`cells_across`) is smaller, that one}
     \cgalParamType{a callable `double(const Point_3&)`, thread-safe}
     \cgalParamDefault{none: the edge is l* everywhere}
+  \cgalParamNEnd
+  \cgalParamNBegin{cells_across}
+    \cgalParamDescription{the size that follows the shape: where a part of the domain is thinner than
+      C l*, the edge shrinks so that C cells fit across it, and where a gap between two parts is
+      narrower than l*, to the gap (`Lattice_mesher_3::thickness_samples()`, `Lattice_mesher_3::size_samples()`);
+      with `number_of_vertices`, l* may grow by a quarter over its estimate to pay for the thin parts'
+      vertices, and past that C comes down to 1.5 before l* grows further; 0 keeps l* everywhere}
+    \cgalParamType{double, 0 or at least 1}
+    \cgalParamDefault{2}
+  \cgalParamNEnd
+  \cgalParamNBegin{grading}
+    \cgalParamDescription{the largest slope of the size that follows the shape (`Lattice_mesher_3::Graded_sizing_field_3`)}
+    \cgalParamType{double}
+    \cgalParamDefault{0.3}
+  \cgalParamNEnd
+  \cgalParamNBegin{min_edge_length}
+    \cgalParamDescription{the size that follows the shape is never below it}
+    \cgalParamType{double}
+    \cgalParamDefault{l* / 4}
   \cgalParamNEnd
   \cgalParamNBegin{visitor}
     \cgalParamDescription{progress: `round_done(const Lattice_mesher_3::Round_report&)` after each round;
@@ -209,18 +328,21 @@ lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
   Visitor visitor = choose_parameter<Visitor>(get_parameter(np, internal_np::visitor));
 
   typedef typename internal_np::Lookup_named_param_def<
-    internal_np::size_field_t, NamedParameters, internal_np::Param_not_found>::type Size;
-  if constexpr(std::is_same<Size, internal_np::Param_not_found>::value)
-    return LM::internal::run_lattice_mesher<Traits>(domain, field, p, LM::internal::unwrap(visitor));
-  else {
-    const Size size = get_parameter(np, internal_np::size_field);
-    if(has_count) {
-      p.edge_length = LM::internal::sized_edge_length<Traits>(domain, field, size, p);
-      p.number_of_vertices = 0.;
-    }
-    const LM::Sized_frame_field_3<FrameField, Size> sized(field, size, p.edge_length);
-    return LM::internal::run_lattice_mesher<Traits>(domain, sized, p, LM::internal::unwrap(visitor));
-  }
+    internal_np::size_field_t, NamedParameters, LM::internal::Unbounded_size>::type Size;
+  const Size size = choose_parameter<Size>(get_parameter(np, internal_np::size_field));
+  const LM::internal::Shape_sizing_parameters defaults;
+  LM::internal::Shape_sizing_parameters s;
+  s.cells_across = choose_parameter(get_parameter(np, internal_np::cells_across), defaults.cells_across);
+  s.grading = choose_parameter(get_parameter(np, internal_np::grading), defaults.grading);
+  s.min_edge_length = choose_parameter(get_parameter(np, internal_np::min_edge_length), defaults.min_edge_length);
+  if(!(s.cells_across == 0. || s.cells_across >= 1.) || !std::isfinite(s.cells_across))
+    throw std::invalid_argument("lattice_mesh_3(): cells_across() must be 0 (no size that follows the shape) or at least 1");
+  if(!(s.grading > 0.) || !std::isfinite(s.grading))
+    throw std::invalid_argument("lattice_mesh_3(): grading() must be positive and finite");
+  if(!(s.min_edge_length >= 0.) || !std::isfinite(s.min_edge_length))
+    throw std::invalid_argument("lattice_mesh_3(): min_edge_length() must not be negative");
+  const auto sized = LM::internal::sized_field<Traits>(domain, field, size, p, s);
+  return LM::internal::run_lattice_mesher<Traits>(domain, sized, p, LM::internal::unwrap(visitor));
 }
 
 /*!

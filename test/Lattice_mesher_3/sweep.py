@@ -17,7 +17,7 @@
 # mesh still fails it); a listed model that now passes is reported, so that the list only shrinks.
 #
 #   sweep.py --lattice-mesh BIN --models DIR [--vertices N] [--shard I/N] [--out DIR] [--csv FILE]
-#            [--only a.off,b.off] [--option=--shape-sizing ...]
+#            [--only a.off,b.off] [--option=--cells-across --option=3 ...]
 
 import argparse
 import csv

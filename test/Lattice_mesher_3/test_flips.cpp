@@ -240,6 +240,36 @@ TEST(Collapse_edges, KeepsAFreeParticleExposedOnTheBoundary)
   EXPECT_EQ(boundary_triangles(mesh), boundary_triangles(original));
 }
 
+// With boundary contractions on, the same exposed particle is merged into a lattice vertex of
+// its facet: its slivers go, the mesh stays valid, every boundary vertex stays on the cube's
+// surface and the volume stays that of the cube (the facet is plane).
+TEST(Collapse_edges, MergesAnExposedParticleIntoTheBoundaryWhenAsked)
+{
+  const LM::Constant_frame_field_3<Traits> field;
+  const Point_3 extra(.2625, 0., .255);
+  LM::Tetrahedral_mesh_3<Point_3> mesh = bcc_cube_with_extra(extra, field);
+  const double before = worst_angle(mesh, field);
+  LM::Collapse_options o;
+  o.boundary_angle = 20.;
+  EXPECT_GE(LM::collapse_edges(mesh, field, o), 1u);
+  EXPECT_EQ(std::find(mesh.points.begin(), mesh.points.end(), extra), mesh.points.end());
+  const LM::Mesh_validity_report v = LM::check_tetrahedral_mesh(mesh);
+  ASSERT_TRUE(v.valid()) << v.message;
+  const double after = worst_angle(mesh, field);
+  std::cout << "worst angle " << before << " -> " << after << " degrees\n";
+  EXPECT_GT(after, 20.);
+  double volume = 0.;
+  for(const std::array<int, 4>& t : mesh.tets)
+    volume += CGAL::volume(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], mesh.points[t[3]]);
+  EXPECT_NEAR(volume, 1., 1e-12);
+  for(const std::array<int, 3>& f : mesh.boundary_faces)
+    for(int i : f) {
+      const Point_3& p = mesh.points[i];
+      const double d = (std::min)({ p.x(), p.y(), p.z(), 1. - p.x(), 1. - p.y(), 1. - p.z() });
+      EXPECT_NEAR(d, 0., 1e-12);
+    }
+}
+
 // On jittered meshes, in an anisotropic field too: the smallest angle never falls, the mesh
 // stays valid and its boundary the same.
 TEST(Collapse_edges, KeepsTheBoundaryAndNeverLowersTheWorstAngle)

@@ -13,6 +13,7 @@
 #include <CGAL/Lattice_mesher_3/Implicit_lattice_domain_3.h>
 #include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
 #include <CGAL/Lattice_mesher_3/IO/medit.h>
+#include <CGAL/Lattice_mesher_3/IO/sizing_field.h>
 #include <CGAL/Lattice_mesher_3/check_mesh.h>
 #include <CGAL/Lattice_mesher_3/mesh_quality.h>
 
@@ -186,6 +187,40 @@ TEST(Lattice_mesh_3, SizeFieldGradesTheMesh)
   EXPECT_GT(halves(counted).first, 2. * halves(counted).second) << halves(counted).first << " left, " << halves(counted).second << " right";
 }
 
+// A slab 0.3 thick under l* = 0.5: with the size that follows the shape (the default, two cells
+// across) the edge shrinks to 0.15 in it, and vertices fill its middle layer; with
+// cells_across(0) the lattice of l* has no room for one, and keeps to the two faces.
+TEST(Lattice_mesh_3, SizeFollowsAThinPartByDefault)
+{
+  Domain::Surface_mesh slab = LM::make_cube_surface_3<K>(0., 2.);
+  for(auto v : slab.vertices()) {
+    const Point_3 p = slab.point(v);
+    slab.point(v) = Point_3(p.x(), p.y(), .15 * p.z());
+  }
+  const Domain d(slab);
+  auto middle = [](const LM::Tetrahedral_mesh_3<Point_3>& m) {
+    std::size_t k = 0;
+    for(const Point_3& p : m.points) k += p.z() > .1 && p.z() < .2;
+    return k;
+  };
+  const Field field;
+  const auto sized = CGAL::lattice_mesh_3(d, field, CGAL::parameters::edge_length(.5));
+  const auto uniform = CGAL::lattice_mesh_3(d, field, CGAL::parameters::edge_length(.5).cells_across(0.));
+  for(const auto* m : { &sized, &uniform }) {
+    const LM::Mesh_validity_report r = LM::check_tetrahedral_mesh(*m);
+    EXPECT_TRUE(r.valid()) << r.message;
+  }
+  const LM::Mesh_quality_3 q = LM::compute_mesh_quality(sized, field, LM::make_lattice(LM::Lattice_type::BCC));
+  std::cout << sized.points.size() << " vertices, " << middle(sized) << " in the middle layer, smallest angle "
+            << q.theta_min.min << "; cells_across(0): " << uniform.points.size() << ", " << middle(uniform) << "\n";
+  // the middle layer of a BCC lattice of edge 0.15 over 2 x 2: about (2 / 0.15)^2 = 178 vertices
+  EXPECT_GT(middle(sized), 100u);
+  EXPECT_EQ(middle(uniform), 0u);
+  EXPECT_GE(q.theta_min.min, 10.);
+  EXPECT_THROW(CGAL::lattice_mesh_3(d, field, CGAL::parameters::edge_length(.5).cells_across(.5)), std::invalid_argument);
+  EXPECT_THROW(CGAL::lattice_mesh_3(d, field, CGAL::parameters::edge_length(.5).grading(0.)), std::invalid_argument);
+}
+
 TEST(Lattice_mesh_3, SurfaceMeshOverloadTakesTheFeatureAngle)
 {
   const Field field;
@@ -340,6 +375,73 @@ TEST(Lattice_mesh_program, WritesOutputsAndRejectsBadInput)
 
 // A self-intersecting surface (elk: seven pairs of faces cross) meshes, with a warning that
 // counts them, into a valid mesh.
+// Sizes from files: 'x y z h' lines, and a Medit mesh with a .sol of one scalar a vertex (MMG's
+// isotropic size map), read back exactly; bad files give errors that name the file and the
+// problem; and lattice-mesh --size-field grades the mesh as the size_field named parameter does.
+TEST(Lattice_mesh_program, SizeFieldFromFiles)
+{
+  const std::string dir = ::testing::TempDir();
+  auto h = [](const Point_3& p) { return .06 + .25 * (p.x() - .1); };
+  const std::string text = dir + "/lm_sizes.txt";
+  std::vector<Point_3> grid;
+  for(int i = 0; i <= 10; ++i) for(int j = 0; j <= 10; ++j) for(int k = 0; k <= 10; ++k)
+    grid.emplace_back(.1 + .1 * i, .1 + .1 * j, .1 + .1 * k);
+  {
+    std::ofstream os(text);
+    os.precision(17);
+    os << "# x y z h\n";
+    for(const Point_3& p : grid) os << p << " " << h(p) << "\n";
+  }
+  const auto samples = LM::read_size_samples<K>(text);
+  ASSERT_EQ(samples.size(), grid.size());
+  for(std::size_t i = 0; i < grid.size(); ++i) {
+    EXPECT_EQ(samples[i].first, grid[i]);
+    EXPECT_EQ(samples[i].second, h(grid[i]));
+  }
+  // a Medit mesh (a tetrahedron) with its sizes
+  LM::Tetrahedral_mesh_3<Point_3> tet;
+  tet.points = { Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0), Point_3(0, 0, 1) };
+  tet.tets = { { 0, 1, 2, 3 } };
+  const std::string mesh = dir + "/lm_sizes.mesh", sol = dir + "/lm_sizes.sol";
+  { std::ofstream os(mesh); LM::write_medit(os, tet); }
+  auto write_sol = [&](const std::string& body) { std::ofstream os(sol); os << "MeshVersionFormatted 2\nDimension 3\n" << body << "End\n"; };
+  write_sol("SolAtVertices\n4\n1 1\n0.5\n0.25\n0.125\n1e-3\n");
+  const auto medit = LM::read_size_samples<K>(mesh);
+  ASSERT_EQ(medit.size(), 4u);
+  EXPECT_EQ(medit[1].first, Point_3(1, 0, 0));
+  EXPECT_EQ(medit[3].second, 1e-3);
+  write_sol("SolAtVertices\n4\n1 3\n1 0 1 0 0 1\n1 0 1 0 0 1\n1 0 1 0 0 1\n1 0 1 0 0 1\n");
+  expect_error([&] { LM::read_size_samples<K>(mesh); }, { "lm_sizes.sol", "is not a size" });
+  write_sol("SolAtVertices\n4\n1 1\n0.5\n-0.25\n0.125\n1\n");
+  expect_error([&] { LM::read_size_samples<K>(mesh); }, { "lm_sizes.sol", "vertex 2", "not positive" });
+  write_sol("SolAtVertices\n3\n1 1\n0.5\n0.25\n0.125\n");
+  expect_error([&] { LM::read_size_samples<K>(mesh); }, { "3 entries", "4 vertices" });
+  const std::string bad = dir + "/lm_sizes_bad.txt";
+  { std::ofstream os(bad); os << "0 0 0 0.1\n0 0 1\n"; }
+  expect_error([&] { LM::read_size_samples<K>(bad); }, { "lm_sizes_bad.txt", "line 2", "expected 4 numbers" });
+  { std::ofstream os(bad); os << "0 0 0 0\n"; }
+  expect_error([&] { LM::read_size_samples<K>(bad); }, { "line 1", "not positive" });
+
+  // the program: the vertices crowd where the file's sizes are small, as with size_field
+  const std::string exe = LATTICE_MESH_EXECUTABLE, out = dir + "/lm_sized.mesh";
+  ASSERT_EQ(std::system((exe + " --domain cube --edge-length 0.25 --size-field " + text + " --quiet -o " + out +
+                         " > " + dir + "/lm_sized_log.txt").c_str()), 0);
+  LM::Tetrahedral_mesh_3<Point_3> sized;
+  std::ifstream ms(out);
+  LM::read_medit(ms, sized);
+  EXPECT_TRUE(LM::check_tetrahedral_mesh(sized).valid());
+  std::size_t left = 0;
+  for(const Point_3& p : sized.points) left += p.x() < .6;
+  const double right = double(sized.points.size() - left);
+  EXPECT_GT(double(left), 6. * right) << left << " left, " << right << " right";
+  EXPECT_LT(double(left), 16. * right) << left << " left, " << right << " right";
+  EXPECT_NE(std::system((exe + " --domain cube --edge-length 0.25 --size-field " + bad + " --quiet -o " + out +
+                         " 2> " + dir + "/lm_sized_err.txt").c_str()), 0);
+  std::ifstream es(dir + "/lm_sized_err.txt");
+  const std::string err((std::istreambuf_iterator<char>(es)), std::istreambuf_iterator<char>());
+  EXPECT_NE(err.find("not positive"), std::string::npos) << err;
+}
+
 TEST(Lattice_mesh_program, SelfIntersectingSurfaceMeshesWithAWarning)
 {
   const std::string dir = ::testing::TempDir();

@@ -116,7 +116,7 @@ TEST(Sizing, ThicknessOfASlab)
   }
   const LM::Polyhedral_lattice_domain_3<K> d(slab);
   std::vector<std::pair<Point_3, double> > samples;
-  LM::size_samples(LM::thickness_samples(d, .25, .05, 3., 1), 3., 1., std::back_inserter(samples));
+  LM::size_samples(LM::thickness_samples(d, .25, .05, 3., 3., 1), 3., 1., std::back_inserter(samples));
   ASSERT_GT(samples.size(), 500u);
   int faces = 0;
   for(const auto& s : samples) {
@@ -128,7 +128,7 @@ TEST(Sizing, ThicknessOfASlab)
   EXPECT_GT(faces, 400);
   std::vector<std::pair<Point_3, double> > thick;
   const LM::Polyhedral_lattice_domain_3<K> cube(LM::make_cube_surface_3<K>(0., 8.));
-  LM::size_samples(LM::thickness_samples(cube, .5, .1, 6., 1), 3., 2., std::back_inserter(thick));
+  LM::size_samples(LM::thickness_samples(cube, .5, .1, 6., 6., 1), 3., 2., std::back_inserter(thick));
   EXPECT_TRUE(thick.empty()) << thick.size() << " samples, the first at " << thick.front().first;
 }
 
@@ -141,7 +141,7 @@ TEST(Sizing, GapBetweenParts)
   two.join(second);
   const LM::Polyhedral_lattice_domain_3<K> d(two);
   std::vector<std::pair<Point_3, double> > samples;
-  LM::size_samples(LM::thickness_samples(d, .5, .05, 3., 2), 3., 1., std::back_inserter(samples));
+  LM::size_samples(LM::thickness_samples(d, .5, .05, 3., 3., 2), 3., 1., std::back_inserter(samples));
   int facing = 0;
   for(const auto& s : samples) {
     ASSERT_TRUE(std::abs(s.first.x() - 4.) < 1e-9 || std::abs(s.first.x() - 4.3) < 1e-9) << s.first;

@@ -16,10 +16,12 @@
 
 #include <CGAL/Kernel/global_functions_3.h>
 #include <CGAL/enum.h>
+#include <CGAL/number_type_config.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -33,7 +35,80 @@ struct Collapse_options
   /// The edges of tetrahedra whose smallest dihedral angle (isotropic space, degrees) is below
   /// this are tried.
   double floor_angle = 40.;
+  /// Boundary vertices of tetrahedra below this angle are contracted too, into a neighbour on
+  /// the boundary; 0 keeps every boundary vertex.
+  double boundary_angle = 0.;
+  /// ... if no boundary face around the vertex turns by more than this (degrees), so that the
+  /// boundary keeps its shape.
+  double boundary_turn = 30.;
+  /// ... and a vertex on a sharp edge or at a corner too, into a neighbour on the boundary at
+  /// most this fraction of the tetrahedron's longest edge away: features closer together than
+  /// the lattice can resolve (those of a coarse or noisy surface) give up a vertex.
+  double short_edge_ratio = 0.25;
 };
+
+namespace internal {
+
+// The link of vertex v in a tetrahedral mesh whose boundary is closed by a vertex at infinity
+// (-1): the faces opposite v in its tetrahedra, and for each boundary face at v its opposite
+// edge joined to -1; with all their edges and vertices.
+struct Vertex_link
+{
+  std::set<std::array<int, 3> > triangles;
+  std::set<std::array<int, 2> > edges;
+  std::set<int> vertices;
+
+  void add(std::array<int, 3> f)
+  {
+    std::sort(f.begin(), f.end());
+    triangles.insert(f);
+    edges.insert({ f[0], f[1] }); edges.insert({ f[0], f[2] }); edges.insert({ f[1], f[2] });
+    vertices.insert(f.begin(), f.end());
+  }
+};
+
+// The link condition for contracting the edge (a, b) (Dey, Edelsbrunner, Guha and Nekhayev,
+// "Topology preserving edge contraction", 1999): the links of a and b meet in the link of the
+// edge only, so that the contracted mesh is a manifold (with boundary) of the same topology.
+template <typename Tets, typename Faces>
+bool link_condition(int a, int b, const std::vector<int>& star_a, const std::vector<int>& star_b,
+                    const std::vector<int>& faces_a, const std::vector<int>& faces_b,
+                    const Tets& tets, const Faces& faces)
+{
+  auto link = [&](int v, const std::vector<int>& star, const std::vector<int>& around) {
+    Vertex_link l;
+    for(int s : star) {
+      std::array<int, 3> f; int k = 0;
+      for(int u : tets[s]) if(u != v) f[k++] = u;
+      l.add(f);
+    }
+    for(int s : around) {
+      std::array<int, 3> f{ -1, -1, -1 }; int k = 1;
+      for(int u : faces[s]) if(u != v) f[k++] = u;
+      l.add(f);
+    }
+    return l;
+  };
+  const Vertex_link la = link(a, star_a, faces_a), lb = link(b, star_b, faces_b);
+  // the link of the edge: the other two vertices of its tetrahedra and boundary faces
+  std::set<std::array<int, 2> > edge_edges;
+  std::set<int> edge_vertices;
+  auto other = [&](const auto& cell, std::array<int, 2> e) {
+    int k = 0;
+    for(int u : cell) if(u != a && u != b) e[k++] = u;
+    std::sort(e.begin(), e.end());
+    edge_edges.insert(e);
+    edge_vertices.insert(e.begin(), e.end());
+  };
+  for(int s : star_a) if(std::find(tets[s].begin(), tets[s].end(), b) != tets[s].end()) other(tets[s], { -1, -1 });
+  for(int s : faces_a) if(std::find(faces[s].begin(), faces[s].end(), b) != faces[s].end()) other(faces[s], { -1, -1 });
+  for(const std::array<int, 3>& f : la.triangles) if(lb.triangles.count(f)) return false;
+  for(const std::array<int, 2>& e : la.edges) if(lb.edges.count(e) && !edge_edges.count(e)) return false;
+  for(int v : la.vertices) if(lb.vertices.count(v) && !edge_vertices.count(v)) return false;
+  return true;
+}
+
+} // namespace internal
 
 /*!
 \ingroup PkgLatticeMesher3Flips
@@ -50,8 +125,18 @@ contraction is made only if every tetrahedron of the new star is positively orie
 orientation tests: the cones then tile `a`'s star, so the mesh stays valid), its smallest angle
 (isotropic space of `field`, B at each centroid) is above that of the stars of `a` and `b`
 together, and it has no more tetrahedra below the floor; of the edges of a tetrahedron, the one
-whose new star is best. Worst tetrahedra first. Vertices are renumbered (the others keep their
-order). Needs `mesh.vertex_kinds`. Returns the number of removed vertices.
+whose new star is best. Worst tetrahedra first.
+
+With `o.boundary_angle` set, a vertex of the boundary that is on no sharp edge or corner, of a
+tetrahedron below that angle, may also be merged into a neighbour `b` on the boundary, which
+stays (a sharp-edge or corner vertex too if `b` is at most `o.short_edge_ratio` times the
+tetrahedron's longest edge away): the boundary faces at `a` become faces at `b`. This removes the slivers whose four
+vertices the surface holds, made by a short boundary edge (two particles projected close
+together where the domain is thin or curved), that no flip or move within the surface raises.
+Such a contraction is made only if it meets the link condition (the mesh stays a manifold with
+the same topology), no boundary face turns by more than `o.boundary_turn`, and the same
+conditions on the new star as above hold. Vertices are renumbered (the others keep their order).
+Needs `mesh.vertex_kinds`. Returns the number of removed vertices.
 */
 template <typename Point_3, typename FrameField>
 std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field,
@@ -73,6 +158,13 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
   for(std::size_t v = 0; v < mesh.points.size(); ++v) interior[v] = mesh.vertex_kinds[v] == Particle_kind::FREE;
   for(const std::array<int, 3>& f : mesh.boundary_faces)
     for(int v : f) interior[v] = 0;
+  // boundary faces at each vertex, and the boundary vertices that may go
+  std::vector<std::vector<int> > faces_at(mesh.points.size());
+  for(std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
+    for(int v : mesh.boundary_faces[f]) faces_at[v].push_back(int(f));
+  std::vector<char> surface(mesh.points.size(), 0);
+  for(std::size_t v = 0; v < mesh.points.size(); ++v)
+    surface[v] = !faces_at[v].empty() && (mesh.vertex_kinds[v] == Particle_kind::BOUNDARY || mesh.vertex_kinds[v] == Particle_kind::FREE);
   std::vector<std::vector<int> > star(mesh.points.size());
   std::vector<double> angle(mesh.tets.size());
   std::vector<std::pair<double, int> > worst;
@@ -150,18 +242,39 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
     return best;
   };
 
-  std::vector<char> dead(mesh.tets.size(), 0), removed(mesh.points.size(), 0);
+  // the boundary faces at a, moved to b, turn by at most o.boundary_turn
+  const double min_cos = std::cos(o.boundary_turn * CGAL_PI / 180.);
+  auto keeps_boundary = [&](int a, int b) {
+    for(int f : faces_at[a]) {
+      const std::array<int, 3>& u = mesh.boundary_faces[f];
+      if(std::find(u.begin(), u.end(), b) != u.end()) continue;
+      std::array<Eigen::Vector3d, 3> p, q;
+      for(int i = 0; i < 3; ++i) { p[i] = internal::to_eigen(mesh.points[u[i]]); q[i] = u[i] == a ? internal::to_eigen(mesh.points[b]) : p[i]; }
+      const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]), m = (q[1] - q[0]).cross(q[2] - q[0]);
+      if(!(n.dot(m) >= min_cos * n.norm() * m.norm())) return false;
+    }
+    return true;
+  };
+  std::vector<char> dead(mesh.tets.size(), 0), removed(mesh.points.size(), 0), dead_face(mesh.boundary_faces.size(), 0);
   std::size_t collapses = 0;
   for(const std::pair<double, int>& w : worst) {
     if(dead[w.second] || angle[w.second] >= o.floor_angle) continue;
     const std::array<int, 4> t = mesh.tets[w.second];
+    const bool at_boundary = angle[w.second] < o.boundary_angle;
     int best_a = -1, best_b = -1;
     Point_3 best_at;
     Score best{ -1., 0 };
+    double longest = 0.;
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j) longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(mesh.points[t[i]], mesh.points[t[j]])));
     for(int a : t) {
-      if(!interior[a]) continue;
+      if(!interior[a] && !(at_boundary && !faces_at[a].empty())) continue;
       for(int b : t) {
         if(b == a) continue;
+        const bool short_edge = std::sqrt(CGAL::squared_distance(mesh.points[a], mesh.points[b])) <= o.short_edge_ratio * longest;
+        if(!interior[a] && ((!surface[a] && !short_edge) || faces_at[b].empty() || !keeps_boundary(a, b) ||
+                            !internal::link_condition(a, b, star[a], star[b], faces_at[a], faces_at[b], mesh.tets, mesh.boundary_faces)))
+          continue;
         Score before{ 180., 0 };
         for(int v : { a, b })
           for(int s : star[v])
@@ -186,6 +299,18 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
         star[best_b].push_back(s);
       }
     }
+    for(int f : faces_at[best_a]) {
+      std::array<int, 3>& u = mesh.boundary_faces[f];
+      if(std::find(u.begin(), u.end(), best_b) != u.end()) {
+        dead_face[f] = 1;
+        for(int v : u)
+          if(v != best_a) faces_at[v].erase(std::find(faces_at[v].begin(), faces_at[v].end(), f));
+      } else {
+        *std::find(u.begin(), u.end(), best_a) = best_b;
+        faces_at[best_b].push_back(f);
+      }
+    }
+    faces_at[best_a].clear();
     star[best_a].clear();
     removed[best_a] = 1;
     mesh.points[best_b] = best_at;
@@ -198,6 +323,10 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
   for(std::size_t s = 0; s < mesh.tets.size(); ++s)
     if(!dead[s]) mesh.tets[live++] = mesh.tets[s];
   mesh.tets.resize(live);
+  live = 0;
+  for(std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
+    if(!dead_face[f]) mesh.boundary_faces[live++] = mesh.boundary_faces[f];
+  mesh.boundary_faces.resize(live);
   internal::remove_vertices(mesh, removed);
   return collapses;
 }

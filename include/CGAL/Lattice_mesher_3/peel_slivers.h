@@ -31,6 +31,9 @@ struct Peeling_options
   /// ... if their smallest height is at most this fraction of their mean edge (isotropic
   /// space): they are flat, and the boundary moves by that height when they go
   double flat_ratio = 0.1;
+  /// ... and below this angle whatever their height: a sliver that all-fixed vertices hold (the
+  /// corners of a coarse surface) is worse than the boundary moving by a fraction of an edge
+  double sliver_angle = 10.;
   /// rounds of peeling: a peeled sliver may expose another
   int max_rounds = 10;
 };
@@ -58,9 +61,10 @@ inline std::vector<std::array<int, 3> > one_tet_faces(const std::vector<std::arr
 /*!
 \ingroup PkgLatticeMesher3Flips
 
-Removes the slivers that lie flat on the boundary: a tetrahedron with two or three faces on the
-boundary, a smallest dihedral angle below `o.angle` and a smallest height at most `o.flat_ratio`
-times its mean edge (both in the isotropic space of `field`). Such a tetrahedron adds almost no
+Removes the slivers that lie flat on the boundary: a tetrahedron with two to four faces on the
+boundary (four: alone, where a part of the domain is thinner than the lattice), a smallest dihedral angle below `o.angle` and a smallest height at most `o.flat_ratio`
+times its mean edge (both in the isotropic space of `field`), or whatever its height, below
+`o.sliver_angle`. Such a tetrahedron adds almost no
 volume; what no flip or move of a vertex raises (its vertices held on the surface), removing it
 does, and the boundary moves by its height. Removals that would leave the boundary non-manifold are not made: a round
 removes a set of slivers that share no vertex, and if the mesh is then invalid
@@ -85,7 +89,7 @@ std::size_t peel_boundary_slivers(Tetrahedral_mesh_3<Point_3>& mesh, const Frame
       const std::array<Face, 4> faces = internal::outward_faces(v);
       int on_boundary = 0;
       for(const Face& f : faces) on_boundary += boundary.count(internal::sorted_triangle(f)) ? 1 : 0;
-      if(on_boundary < 2 || on_boundary > 3) continue;
+      if(on_boundary < 2) continue;
       const std::array<Eigen::Vector3d, 4> q = internal::isotropic_tetrahedron(mesh, field, t);
       const double angle = smallest_dihedral_angle(q[0], q[1], q[2], q[3]);
       if(!(angle < o.angle)) continue;
@@ -98,7 +102,7 @@ std::size_t peel_boundary_slivers(Tetrahedral_mesh_3<Point_3>& mesh, const Frame
         largest_face = (std::max)(largest_face, .5 * (q[(i + 2) % 4] - q[(i + 1) % 4]).cross(q[(i + 3) % 4] - q[(i + 1) % 4]).norm());
       const double volume = std::abs((q[1] - q[0]).cross(q[2] - q[0]).dot(q[3] - q[0])) / 6.;
       const bool flat = 3. * volume <= o.flat_ratio * mean_edge * largest_face;
-      if(flat) candidates.emplace_back(angle, t);
+      if(flat || angle < o.sliver_angle) candidates.emplace_back(angle, t);
     }
     if(candidates.empty()) break;
     std::sort(candidates.begin(), candidates.end());

@@ -47,7 +47,7 @@ it (300 random samples of sizes 0.05 to 1.5 in a 10 x 10 x 3 box: 1 % of the poi
 most 6 %). Samples at or above `max_size` are
 dropped and the field is at most `max_size` (unbounded when it is infinite).
 
-Used for the size that follows the shape (`thickness_size_samples()`) and for sizes the user
+Used for the size that follows the shape (`size_samples()`) and for sizes the user
 gives at points (a Medit `.sol` of sizes at the vertices of a mesh): one mechanism for both.
 Queries are `const` and thread-safe.
 
@@ -263,8 +263,8 @@ struct Thickness_sample_3
 
 Measures the domain at the points of `domain.sample_surface(spacing)`: the thickness, marching
 from each point along the inward normal until the domain is left, and the gap in front of it,
-marching along the outward normal until the domain is met again; both no farther than `reach`,
-in steps of `step`, the crossing then located to 1/64 of a step. A part thinner than a step (or
+marching along the outward normal until the domain is met again; no farther than `reach` and
+`gap_reach`, in steps of `step`, the crossing then located to 1/64 of a step. A part thinner than a step (or
 a point near an edge sharper than a right angle, whose inward normal leaves at once) measures a
 step. Points closer than `step / 2` to a feature curve are skipped: their normal is either
 face's, along which the march may run in the plane of the other face. `threads` OpenMP
@@ -274,23 +274,25 @@ threads share the points.
 */
 template <typename MeshDomain>
 std::vector<Thickness_sample_3<typename MeshDomain::Geom_traits> >
-thickness_samples(const MeshDomain& domain, double spacing, double step, double reach, int threads = 1)
+thickness_samples(const MeshDomain& domain, double spacing, double step, double reach, double gap_reach,
+                  int threads = 1)
 {
   typedef typename MeshDomain::Geom_traits K;
   typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_3 Vector_3;
-  if(!(spacing > 0.) || !(step > 0.) || !(reach > 0.))
-    throw std::invalid_argument("thickness_samples(): the spacing, the step and the reach must be positive");
+  if(!(spacing > 0.) || !(step > 0.) || !(reach > 0.) || !(gap_reach > 0.))
+    throw std::invalid_argument("thickness_samples(): the spacing, the step and the reaches must be positive");
   std::vector<Point_3> points;
   domain.sample_surface(spacing, std::back_inserter(points));
   std::vector<Thickness_sample_3<K> > result(points.size());
   std::vector<char> skipped(points.size(), 0);
   // the distance along `direction` from `p` at which is_inside() first differs from `inside`
   auto march = [&](const Point_3& p, const Vector_3& direction, bool inside) {
+    const double reach_here = inside ? reach : gap_reach;
     double t = .5 * step;
-    for(; t <= reach; t += step)
+    for(; t <= reach_here; t += step)
       if(domain.is_inside(p + t * direction) != inside) break;
-    if(t > reach) return -1.;
+    if(t > reach_here) return -1.;
     double a = (std::max)(0., t - step), b = t;
     for(int it = 0; it < 6; ++it) {
       const double m = .5 * (a + b);
@@ -344,31 +346,6 @@ OutputIterator size_samples(const std::vector<Thickness_sample_3<K> >& measures,
       for(double t = .5 * h; t <= .5 * m.thickness; t += .5 * h) *out++ = std::make_pair(m.point - t * m.normal, h);
   }
   return out;
-}
-
-/*!
-\ingroup PkgLatticeMesher3Sizing
-
-The size that follows the shape of `domain` for a lattice edge of about `edge_length`: the
-envelope (`Graded_sizing_field_3`, slope `grading`) of the `size_samples()` for `cells_across`
-of the `thickness_samples()` taken every `edge_length / 2` with steps of `edge_length / 8`,
-for sizes up to `2 edge_length` (so that the field also serves an edge length up to twice the
-estimate, as a vertex count may need).
-
-\tparam MeshDomain a model of `LatticeMeshDomain_3`
-*/
-template <typename MeshDomain>
-Graded_sizing_field_3<typename MeshDomain::Geom_traits>
-shape_sizing_field(const MeshDomain& domain, double edge_length, double cells_across, double grading, int threads = 1)
-{
-  typedef typename MeshDomain::Geom_traits::Point_3 Point_3;
-  if(!(edge_length > 0.) || !std::isfinite(edge_length))
-    throw std::invalid_argument("shape_sizing_field(): the edge length must be positive and finite");
-  const double largest = 2. * edge_length;
-  std::vector<std::pair<Point_3, double> > samples;
-  size_samples(thickness_samples(domain, .5 * edge_length, .125 * edge_length, cells_across * largest, threads),
-               cells_across, largest, std::back_inserter(samples));
-  return Graded_sizing_field_3<typename MeshDomain::Geom_traits>(samples, grading, largest);
 }
 
 /*!

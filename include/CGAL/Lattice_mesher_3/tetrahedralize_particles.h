@@ -123,9 +123,11 @@ Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& p
 
   // 2. Repair: a boundary edge in more than two boundary faces, or a vertex whose boundary
   // faces form several fans, is made manifold by removing the kept cells around it that have
-  // a face on the boundary (peeling), repeated until nothing changes.
+  // a face on the boundary (peeling), repeated until nothing changes: each pass removes cells,
+  // so it ends, but where the domain is thin one removal may expose the next (cheese and rotor at
+  // 3,000 vertices: more than 20 passes), hence the generous bound.
   auto is_boundary_facet = [](Cell_handle c, int i) { return c->info() != c->neighbor(i)->info(); };
-  for(int pass = 0; pass < 20;) {
+  for(int pass = 0; pass < 200;) {
     std::set<Cell_handle> to_remove;
     std::vector<Cell_handle> ring;
     for(auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
@@ -175,7 +177,7 @@ Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& p
     std::vector<Cell_handle> unkept;
     for(Cell_handle c : to_remove) if(wedges.erase(c)) unkept.push_back(c);
     for(Cell_handle c : unkept) c->info() = 0;
-    if(!unkept.empty()) continue;   // no pass of the 20: at most one per wedge
+    if(!unkept.empty()) continue;   // not counted as a pass: at most one per wedge
     // remove only cells that touch the boundary, so that repairs stay local; decided before any
     // removal, so that the result does not depend on the order of the set (cell addresses)
     std::vector<Cell_handle> touching;

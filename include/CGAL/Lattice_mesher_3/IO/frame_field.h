@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -105,15 +106,15 @@ inline bool frame_from_metric(const double m[6], Eigen::Matrix3d& t, Eigen::Vect
   return true;
 }
 
-// The frames of a Medit .sol file, one per point: a "SolAtVertices" section with one field of
-// type 4 (9 values: T row by row) or 3 (6 values: a metric M, T = M^(-1/2)). The errors start
-// with `where`.
-template <typename Point_3>
-std::vector<Eigen::Matrix3d> read_sol_frames(std::istream& is, const std::vector<Point_3>& points,
-                                             const std::string& where)
+// Reads the one SolAtVertices section of `n` entries and one field of a Medit .sol file: `check(type)`
+// says why a solution type is not taken (empty if it is), and `vertex(i, values, type, fail)` takes
+// the values of vertex i (1, 3, 6 or 9 for the types 1 to 4), calling `fail(message)` on a bad one.
+// The errors start with `where`.
+template <typename Check, typename Vertex>
+void read_sol_at_vertices(std::istream& is, std::size_t n, const std::string& where, const Check& check, const Vertex& vertex)
 {
   Medit_tokenizer in(is, where);
-  std::vector<Eigen::Matrix3d> frames;
+  const std::function<void(const std::string&)> fail = [&](const std::string& what) { in.fail(what); };
   std::string keyword;
   if(!in.next(keyword) || keyword != "MeshVersionFormatted")
     in.fail("not a Medit .sol file: expected 'MeshVersionFormatted', got '" + keyword + "'");
@@ -125,31 +126,19 @@ std::vector<Eigen::Matrix3d> read_sol_frames(std::istream& is, const std::vector
     } else if(keyword == "Dimension") {
       in.read_integer("Dimension (only 3D fields are read)", 3, 3);
     } else if(keyword == "SolAtVertices" && !read) {
-      const long long n = in.read_integer("the number of SolAtVertices", 0, std::numeric_limits<int>::max());
-      if(std::size_t(n) != points.size())
-        in.fail("SolAtVertices has " + std::to_string(n) + " entries for a mesh of " + std::to_string(points.size()) + " vertices");
-      in.read_integer("the number of solution fields (one frame or metric field is read)", 1, 1);
+      const long long count = in.read_integer("the number of SolAtVertices", 0, std::numeric_limits<int>::max());
+      if(std::size_t(count) != n)
+        in.fail("SolAtVertices has " + std::to_string(count) + " entries for a mesh of " + std::to_string(n) + " vertices");
+      in.read_integer("the number of solution fields (one field is read)", 1, 1);
       const long long type = in.read_integer("the solution type", 1, 4);
-      if(type != 3 && type != 4)
-        in.fail("solution type " + std::to_string(type) + (type == 1 ? " (scalar)" : " (vector)")
-                + " is not a frame: expected 4 (a 3x3 frame, 9 values) or 3 (a symmetric metric, 6 values)");
-      for(std::size_t i = 0; i < points.size(); ++i) {
-        const std::string vertex = "vertex " + std::to_string(i + 1);
+      const std::string refused = check(type);
+      if(!refused.empty()) in.fail(refused);
+      const int values = type == 1 ? 1 : type == 2 ? 3 : type == 3 ? 6 : 9;
+      for(std::size_t i = 0; i < n; ++i) {
         double v[9];
-        for(int k = 0; k < (type == 4 ? 9 : 6); ++k)
-          if(!std::isfinite(v[k] = in.read_double("SolAtVertices"))) in.fail(vertex + ": non-finite value");
-        Eigen::Matrix3d t;
-        Eigen::Vector3d eigenvalues;
-        if(type == 4) {
-          t = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> >(v);
-        } else if(!frame_from_metric(v, t, eigenvalues)) {
-          std::ostringstream os;
-          os << vertex << ": the metric is not positive definite (eigenvalues " << eigenvalues.transpose() << ")";
-          in.fail(os.str());
-        }
-        try { check_frame_sample(vertex, points[i], t); }
-        catch(const std::exception& e) { in.fail(e.what()); }
-        frames.push_back(t);
+        for(int k = 0; k < values; ++k)
+          if(!std::isfinite(v[k] = in.read_double("SolAtVertices"))) in.fail("vertex " + std::to_string(i + 1) + ": non-finite value");
+        vertex(i, v, type, fail);
       }
       read = true;
     } else {
@@ -158,6 +147,37 @@ std::vector<Eigen::Matrix3d> read_sol_frames(std::istream& is, const std::vector
   }
   if(!read) in.fail("no SolAtVertices section");
   if(!ended) in.fail("unexpected end of file: missing 'End'");
+}
+
+// The frames of a Medit .sol file, one per point: a "SolAtVertices" section with one field of
+// type 4 (9 values: T row by row) or 3 (6 values: a metric M, T = M^(-1/2)). The errors start
+// with `where`.
+template <typename Point_3>
+std::vector<Eigen::Matrix3d> read_sol_frames(std::istream& is, const std::vector<Point_3>& points,
+                                             const std::string& where)
+{
+  std::vector<Eigen::Matrix3d> frames;
+  auto check = [](long long type) {
+    return type == 3 || type == 4 ? std::string()
+         : "solution type " + std::to_string(type) + (type == 1 ? " (scalar)" : " (vector)")
+           + " is not a frame: expected 4 (a 3x3 frame, 9 values) or 3 (a symmetric metric, 6 values)";
+  };
+  read_sol_at_vertices(is, points.size(), where, check,
+    [&](std::size_t i, const double* v, long long type, const std::function<void(const std::string&)>& fail) {
+      const std::string vertex = "vertex " + std::to_string(i + 1);
+      Eigen::Matrix3d t;
+      Eigen::Vector3d eigenvalues;
+      if(type == 4) {
+        t = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> >(v);
+      } else if(!frame_from_metric(v, t, eigenvalues)) {
+        std::ostringstream os;
+        os << vertex << ": the metric is not positive definite (eigenvalues " << eigenvalues.transpose() << ")";
+        fail(os.str());
+      }
+      try { check_frame_sample(vertex, points[i], t); }
+      catch(const std::exception& e) { fail(e.what()); }
+      frames.push_back(t);
+    });
   return frames;
 }
 

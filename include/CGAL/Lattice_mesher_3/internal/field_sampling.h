@@ -16,6 +16,7 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <vector>
 
 namespace CGAL {
 namespace Lattice_mesher_3 {
@@ -39,28 +40,44 @@ Point_3 random_point(const CGAL::Bbox_3& bb, Uniform& u)
   return Point_3(bb.xmin() + u() * (bb.xmax() - bb.xmin()), y, z);
 }
 
-// Samples up to `n` points inside the domain with a fixed seed, so that the estimate, and the
-// particle count derived from it, do not change from run to run.
-template <typename Domain, typename FrameField>
-Det_b_samples sample_det_b(const Domain& domain, const FrameField& field, std::size_t n)
+// Up to `n` points inside the domain, uniform in its bounding box, from a fixed seed, so that the
+// estimates made from them, and the particle count derived from these, do not change from run
+// to run.
+template <typename Domain>
+std::vector<typename Domain::Geom_traits::Point_3> inside_samples(const Domain& domain, std::size_t n)
 {
   typedef typename Domain::Geom_traits::Point_3 Point_3;
   const CGAL::Bbox_3 bb = domain.bbox();
   std::mt19937_64 g(0x5eed);
   auto u = [&] { return double(g() >> 11) * 0x1.0p-53; };
-  double sum = 0., max = 0.;
-  std::size_t inside = 0;
-  for(std::size_t tries = 0; inside < n && tries < 200 * n; ++tries) {
+  std::vector<Point_3> points;
+  for(std::size_t tries = 0; points.size() < n && tries < 200 * n; ++tries) {
     const Point_3 p = random_point<Point_3>(bb, u);
-    if(!domain.is_inside(p)) continue;
+    if(domain.is_inside(p)) points.push_back(p);
+  }
+  if(points.empty())
+    throw std::invalid_argument("the domain is empty: no point of its bounding box is inside");
+  return points;
+}
+
+// |det B| of `field` at the points.
+template <typename Point_3, typename FrameField>
+Det_b_samples det_b_at(const std::vector<Point_3>& points, const FrameField& field)
+{
+  double sum = 0., max = 0.;
+  for(const Point_3& p : points) {
     const double d = std::abs(isotropic_map(field.frame(p), p).determinant());
     sum += d;
     max = (std::max)(max, d);
-    ++inside;
   }
-  if(inside == 0)
-    throw std::invalid_argument("the domain is empty: no point of its bounding box is inside");
-  return { sum / double(inside), max };
+  return { sum / double(points.size()), max };
+}
+
+// |det B| at `n` inside_samples().
+template <typename Domain, typename FrameField>
+Det_b_samples sample_det_b(const Domain& domain, const FrameField& field, std::size_t n)
+{
+  return det_b_at(inside_samples(domain, n), field);
 }
 
 } // namespace internal
