@@ -68,7 +68,7 @@ struct Combined_size_3
 // H (0: l*/4).
 struct Shape_sizing_parameters
 {
-  double cells_across = 2., grading = .3, min_edge_length = 0.;
+  double cells_across = 1.5, grading = .3, min_edge_length = 0.;
 };
 
 // What the sizing did: the samples of the shape's size, the cells across and the smallest size.
@@ -250,9 +250,10 @@ them (`tetrahedralize_particles()`).
       C l*, the edge shrinks so that C cells fit across it, and where a gap between two parts is
       narrower than l*, to the gap (`Lattice_mesher_3::thickness_samples()`, `Lattice_mesher_3::size_samples()`);
       with `number_of_vertices`, l* may grow by a quarter over its estimate to pay for the thin parts'
-      vertices, and past that C comes down to 1.5 before l* grows further; 0 keeps l* everywhere}
+      vertices, and past that C comes down to 1.5 (if it is above) before l* grows further; 0 keeps l*
+      everywhere}
     \cgalParamType{double, 0 or at least 1}
-    \cgalParamDefault{2}
+    \cgalParamDefault{1.5}
   \cgalParamNEnd
   \cgalParamNBegin{grading}
     \cgalParamDescription{the largest slope of the size that follows the shape (`Lattice_mesher_3::Graded_sizing_field_3`)}
