@@ -97,12 +97,13 @@ sized_field(const MeshDomain& domain, const FrameField& field, const UserSize& u
   auto floor = [&](double l) { return s.min_edge_length > 0. ? s.min_edge_length : .25 * l; };
   auto sized = [&](Size h, double l) { h.floor = floor(l); return Sized(field, h, l); };
   // the count of the field scaled by h at l, from |det B| at fixed inside points: drawn once, they
-  // spare the fit's hundred counts their inside tests
+  // spare the fit's hundred counts their inside tests; not drawn without a count to fit. The
+  // mesher also checks the parameters before the sizing's work.
   typedef Lattice_particle_mesher_3<Traits, MeshDomain, FrameField> Mesher;
-  const std::vector<typename K::Point_3> inside = internal::inside_samples(domain, 4096);
   Lattice_mesher_parameters q = p;
   q.number_of_vertices = n;
   const Mesher mesher(domain, field, q);
+  const std::vector<typename K::Point_3> inside = n > 0. ? internal::inside_samples(domain, 4096) : std::vector<typename K::Point_3>();
   auto count = [&](const Size& h, double l) { return mesher.expected_vertices(l, internal::det_b_at(inside, sized(h, l)).mean); };
   // the largest l from lo on with count(h, l) <= n: the count falls as l grows
   auto solve = [&](const Size& h, double lo, double hi) {

@@ -264,17 +264,22 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
     int best_a = -1, best_b = -1;
     Point_3 best_at;
     Score best{ -1., 0 };
-    double longest = 0.;
-    for(int i = 0; i < 4; ++i)
-      for(int j = i + 1; j < 4; ++j) longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(mesh.points[t[i]], mesh.points[t[j]])));
+    // a boundary a goes into a boundary b: a sharp-edge or corner a only along a short edge
+    auto boundary_merge = [&](int a, int b) {
+      if(faces_at[b].empty()) return false;
+      if(!surface[a]) {
+        double longest = 0.;
+        for(int i = 0; i < 4; ++i)
+          for(int j = i + 1; j < 4; ++j) longest = (std::max)(longest, CGAL::squared_distance(mesh.points[t[i]], mesh.points[t[j]]));
+        if(CGAL::squared_distance(mesh.points[a], mesh.points[b]) > o.short_edge_ratio * o.short_edge_ratio * longest) return false;
+      }
+      return keeps_boundary(a, b) &&
+             internal::link_condition(a, b, star[a], star[b], faces_at[a], faces_at[b], mesh.tets, mesh.boundary_faces);
+    };
     for(int a : t) {
       if(!interior[a] && !(at_boundary && !faces_at[a].empty())) continue;
       for(int b : t) {
-        if(b == a) continue;
-        const bool short_edge = std::sqrt(CGAL::squared_distance(mesh.points[a], mesh.points[b])) <= o.short_edge_ratio * longest;
-        if(!interior[a] && ((!surface[a] && !short_edge) || faces_at[b].empty() || !keeps_boundary(a, b) ||
-                            !internal::link_condition(a, b, star[a], star[b], faces_at[a], faces_at[b], mesh.tets, mesh.boundary_faces)))
-          continue;
+        if(b == a || (!interior[a] && !boundary_merge(a, b))) continue;
         Score before{ 180., 0 };
         for(int v : { a, b })
           for(int s : star[v])

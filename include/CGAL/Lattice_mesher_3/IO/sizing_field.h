@@ -48,10 +48,7 @@ read_size_samples(const std::string& filename, std::string data_file = std::stri
   const std::string function = "read_size_samples()";
   std::vector<std::pair<Point_3, double> > samples;
   std::ifstream is = internal::open_input_file(function, filename);
-  auto check = [&](double h, const std::string& where) {
-    if(!(h > 0.) || !std::isfinite(h))
-      throw std::runtime_error(where + ": the size " + std::to_string(h) + " is not positive and finite");
-  };
+  auto positive = [](double h) { return h > 0. && std::isfinite(h); };
   if(internal::starts_like_medit(is)) {
     Tetrahedral_mesh_3<Point_3> mesh;
     try { read_medit(is, mesh); }
@@ -65,7 +62,7 @@ read_size_samples(const std::string& filename, std::string data_file = std::stri
     internal::read_sol_at_vertices(data, mesh.points.size(), where,
       [](long long type) { return type == 1 ? std::string() : "solution type " + std::to_string(type) + " is not a size: expected 1 (a scalar)"; },
       [&](std::size_t i, const double* v, long long, const std::function<void(const std::string&)>& fail) {
-        if(!(v[0] > 0.) || !std::isfinite(v[0])) fail("vertex " + std::to_string(i + 1) + ": the size is not positive and finite");
+        if(!positive(v[0])) fail("vertex " + std::to_string(i + 1) + ": the size is not positive and finite");
         samples.emplace_back(mesh.points[i], v[0]);
       });
   } else {
@@ -78,7 +75,8 @@ read_size_samples(const std::string& filename, std::string data_file = std::stri
       if(n != 4) throw std::runtime_error(where + ": expected 4 numbers (x y z h), got " + std::to_string(n));
       if(!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
         throw std::runtime_error(where + ": the point is not finite");
-      check(v[3], where);
+      if(!positive(v[3]))
+        throw std::runtime_error(where + ": the size " + std::to_string(v[3]) + " is not positive and finite");
       samples.emplace_back(Point_3(v[0], v[1], v[2]), v[3]);
     }
     if(is.bad()) throw std::runtime_error(function + ": error while reading '" + filename + "'");
