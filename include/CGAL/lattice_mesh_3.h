@@ -23,7 +23,6 @@
 #include <functional>
 #include <memory>
 #include <stdexcept>
-#include <type_traits>
 
 namespace CGAL {
 
@@ -116,7 +115,8 @@ sized_field(const MeshDomain& domain, const FrameField& field, const UserSize& u
   double l = p.edge_length;
   if(n > 0.) {
     l = mesher.edge_length();
-    if(!std::is_same<UserSize, Unbounded_size>::value) l = solve(size, l, l);
+    // a user's size above l at every sample leaves l as the mesher solved it, bit for bit
+    if(internal::det_b_at(inside, sized(size, l)).mean != internal::det_b_at(inside, field).mean) l = solve(size, l, l);
   }
   double cells = s.cells_across;
   if(cells > 0.) {
