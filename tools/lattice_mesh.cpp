@@ -53,7 +53,8 @@ static const char* usage =
   "                    [--field identity|rotation-y|fig8|fig9|FILE [--field-data FILE]]\n"
   "                    [--feature-angle DEG] [--seed S] [--threads N] [--coarse-levels K]\n"
   "                    [--max-rounds R] [--no-flips] [--smoothing-rounds N] [--quiet]\n"
-  "                    [--size-field FILE] [--cells-across C] [--grading G] [--min-edge-length H]\n"
+  "                    [--size-field FILE] [--cells-across C] [--surface-tolerance E]\n"
+  "                    [--grading G] [--min-edge-length H]\n"
   "                    -o OUT.mesh [--vtu OUT.vtu] [--stats OUT.json]\n"
   "       lattice-mesh [INPUT | --domain ...] [--field ...] --write-field OUT.txt --field-spacing H\n"
   "  INPUT            closed triangle surface (OFF, OBJ, STL, PLY)\n"
@@ -85,6 +86,10 @@ static const char* usage =
   "                   G per unit length (--grading, default 0.3) and is never below H\n"
   "                   (--min-edge-length, default l*/4); --edge-length and --vertices give l*,\n"
   "                   the largest edge\n"
+  "  --surface-tolerance\n"
+  "                   the boundary facets keep within E of the surface (as Mesh_3's facet_distance):\n"
+  "                   where it curves or creases so much that facets of size l* would leave it by\n"
+  "                   more, the size shrinks (never below H); default 0: none\n"
   "  --no-flips, --smoothing-rounds N\n"
   "                   connectivity flips and rounds of worst-element smoothing and edge\n"
   "                   contractions after the tetrahedralization (default: flips on, 2 rounds;\n"
@@ -95,6 +100,7 @@ struct Options
   std::string input, domain, lattice = "bcc", field = "identity", field_data, write_field, out, vtu, stats, size_field;
   double edge_length = 0., vertices = 0., feature_angle = 60., field_spacing = 0.;
   double cells_across = LM::internal::Shape_sizing_parameters().cells_across;
+  double surface_tolerance = LM::internal::Shape_sizing_parameters().surface_tolerance;
   double grading = LM::internal::Shape_sizing_parameters().grading, min_edge_length = 0.;
   unsigned int seed = 0;
   int threads = 1, coarse_levels = -1, max_rounds = -1;
@@ -128,6 +134,7 @@ static Options parse(int argc, char** argv)
     else if(a == "--no-flips") o.flip = false;
     else if(a == "--size-field") o.size_field = args.value(a);
     else if(a == "--cells-across") o.cells_across = args.number(a);
+    else if(a == "--surface-tolerance") o.surface_tolerance = args.number(a);
     else if(a == "--grading") o.grading = args.number(a);
     else if(a == "--min-edge-length") o.min_edge_length = args.number(a);
     else if(a == "--smoothing-rounds") o.smoothing_rounds = int(args.integer(a, 0, std::numeric_limits<int>::max()));
@@ -153,6 +160,8 @@ static Options parse(int argc, char** argv)
     throw std::invalid_argument("--cells-across must be 0 or at least 1");
   if(!(o.grading > 0.) || !std::isfinite(o.grading))
     throw std::invalid_argument("--grading must be positive");
+  if(!(o.surface_tolerance >= 0.) || !std::isfinite(o.surface_tolerance))
+    throw std::invalid_argument("--surface-tolerance must be 0 (none) or positive");
   if(!(o.min_edge_length >= 0.) || !std::isfinite(o.min_edge_length))
     throw std::invalid_argument("--min-edge-length must be positive");
   return o;
@@ -212,6 +221,7 @@ static Field shape_sized_field(const Domain& domain, const Field& field, LM::Lat
   s.cells_across = o.cells_across;
   s.grading = o.grading;
   s.min_edge_length = o.min_edge_length;
+  s.surface_tolerance = o.surface_tolerance;
   LM::internal::Shape_sizing_report report;
   // the user's sizes: the envelope of the file's samples
   std::function<double(const Point_3&)> user = LM::internal::Unbounded_size();
@@ -223,9 +233,9 @@ static Field shape_sized_field(const Domain& domain, const Field& field, LM::Lat
     user = given;
   }
   const auto sized = LM::internal::sized_field<Traits>(domain, field, user, p, s, &report);
-  if(!o.quiet && o.cells_across > 0.)
-    std::printf("lattice-mesh: shape sizing: %zu samples thinner than %.3g cells of l* %.4g, smallest size %.4g, %.2f s\n",
-                report.samples, report.cells_across, p.edge_length, report.smallest_size,
+  if(!o.quiet && (o.cells_across > 0. || report.surface_tolerance > 0.))
+    std::printf("lattice-mesh: shape sizing: %zu samples (%.3g cells across, surface tolerance %.4g) at l* %.4g, smallest size %.4g, %.2f s\n",
+                report.samples, report.cells_across, report.surface_tolerance, p.edge_length, report.smallest_size,
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return Field([sized](const Point_3& x) { return sized.frame(x); });
 }
@@ -268,7 +278,11 @@ static int run(const Domain& domain, const Field_choice& choice, const Options& 
 
   const LM::Mesh_validity_report validity = LM::check_tetrahedral_mesh(mesh);
   LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, mesher.lattice());
-  q.hausdorff = LM::boundary_hausdorff_distance(mesh, domain, 0.25 * mesher.edge_length());
+  // the local size: the longest edge of the lattice cube there, which the sizing shrinks
+  const LM::Boundary_distances_3 distances = LM::boundary_distances(mesh, domain, 0.25 * mesher.edge_length(),
+      [&](const Point_3& x) { return mesher.edge_length() * field.frame(x).colwise().norm().maxCoeff(); });
+  q.hausdorff = distances.hausdorff;
+  q.hausdorff_over_size = distances.over_size;
   q.edge_length = mesher.edge_length();
   q.seconds.optimize = std::chrono::duration<double>(t1 - t0).count();
   q.seconds.mesh = std::chrono::duration<double>(t2 - t1).count();

@@ -22,6 +22,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 
 namespace CGAL {
@@ -63,18 +64,18 @@ struct Combined_size_3
   }
 };
 
-// The size that follows the shape: `cells_across` C (0: none), `grading` G, `min_edge_length`
-// H (0: l*/4).
+// The size that follows the shape: `cells_across` C (0: none), `surface_tolerance` (0: none),
+// `grading` G, `min_edge_length` H (0: l*/4).
 struct Shape_sizing_parameters
 {
-  double cells_across = 1.5, grading = .3, min_edge_length = 0.;
+  double cells_across = 1.5, surface_tolerance = 0., grading = .3, min_edge_length = 0.;
 };
 
 // What the sizing did: the samples of the shape's size, the cells across and the smallest size.
 struct Shape_sizing_report
 {
   std::size_t samples = 0;
-  double cells_across = 0., smallest_size = 0.;
+  double cells_across = 0., surface_tolerance = 0., smallest_size = 0.;
 };
 
 // `field` scaled by the user's size and the size that follows the shape of `domain`, and
@@ -106,7 +107,16 @@ sized_field(const MeshDomain& domain, const FrameField& field, const UserSize& u
   auto count = [&](const Size& h, double l) { return mesher.expected_vertices(l, internal::det_b_at(inside, sized(h, l)).mean); };
   // the largest l from lo on with count(h, l) <= n: the count falls as l grows
   auto solve = [&](const Size& h, double lo, double hi) {
-    while(count(h, hi) > n && hi < 1e6 * lo) { lo = hi; hi *= 2.; }
+    const double start = lo;
+    while(count(h, hi) > n && hi < 1e6 * start) { lo = hi; hi *= 2.; }
+    // sizes given in lengths (a size field, min_edge_length, surface_tolerance) that alone
+    // need more than the count at any l*
+    if(count(h, hi) > n) {
+      std::ostringstream os;
+      os << "number_of_vertices(" << n << "): the sizes below l* alone need about " << count(h, hi)
+         << " vertices at any l*; ask for more vertices, or for larger sizes (size_field, min_edge_length, surface_tolerance)";
+      throw std::invalid_argument(os.str());
+    }
     for(int it = 0; it < 40; ++it) { const double mid = .5 * (lo + hi); (count(h, mid) > n ? lo : hi) = mid; }
     return hi;
   };
@@ -119,15 +129,19 @@ sized_field(const MeshDomain& domain, const FrameField& field, const UserSize& u
     if(internal::det_b_at(inside, sized(size, l)).mean != internal::det_b_at(inside, field).mean) l = solve(size, l, l);
   }
   double cells = s.cells_across;
-  if(cells > 0.) {
-    const double estimate = l;
+  const double estimate = l, tolerance = s.surface_tolerance;
+  if(cells > 0. || tolerance > 0.) {
     // sizes up to twice the estimate, so that they also serve the l* of the fit: thicknesses up
     // to C times that and gaps up to that, in steps of l*/4 (a thinner part measures a step,
-    // whose size is below the smallest, l*/4)
-    const auto measures = thickness_samples(domain, .5 * estimate, .25 * estimate, 2. * cells * estimate, 2. * estimate, p.threads);
+    // whose size is below the smallest, l*/4); deviations at scales down to l*/4
+    std::vector<Thickness_sample_3<K> > measures;
+    if(cells > 0.) measures = thickness_samples(domain, .5 * estimate, .25 * estimate, 2. * cells * estimate, 2. * estimate, p.threads);
+    std::vector<Deviation_sample_3<K> > deviations;
+    if(tolerance > 0.) deviations = deviation_samples(domain, .5 * estimate, 2. * estimate, p.threads);
     auto shape = [&](double c) -> std::shared_ptr<const Shape> {
       std::vector<std::pair<typename K::Point_3, double> > samples;
-      size_samples(measures, c, 2. * estimate, std::back_inserter(samples));
+      if(c > 0.) size_samples(measures, c, 2. * estimate, std::back_inserter(samples));
+      if(tolerance > 0.) tolerance_size_samples(deviations, tolerance, 2. * estimate, std::back_inserter(samples));
       if(samples.empty()) return nullptr;
       return std::make_shared<const Shape>(samples, s.grading, 2. * estimate);
     };
@@ -139,16 +153,16 @@ sized_field(const MeshDomain& domain, const FrameField& field, const UserSize& u
       else {
         l = most;
         const double fewest = (std::min)(1.5, cells);
-        if(count(with(fewest), most) <= n) {   // the count grows with the cells across
+        if(cells > fewest && count(with(fewest), most) <= n) {   // the count grows with the cells across
           double lo = fewest, hi = cells;
           for(int it = 0; it < 6; ++it) { const double mid = .5 * (lo + hi); (count(with(mid), most) > n ? hi : lo) = mid; }
           cells = lo;
+          size = with(cells);
         }
         else {
-          cells = fewest;
-          l = solve(with(cells), most, most);
+          if(cells > fewest) { cells = fewest; size = with(cells); }
+          l = solve(size, most, most);
         }
-        size = with(cells);
       }
     }
   }
@@ -156,6 +170,7 @@ sized_field(const MeshDomain& domain, const FrameField& field, const UserSize& u
   if(report) {
     report->samples = size.shape ? size.shape->number_of_samples() : 0;
     report->cells_across = cells;
+    report->surface_tolerance = tolerance;
     report->smallest_size = size.shape ? (std::max)(size.shape->min_size(), floor(l)) : l;
   }
   return sized(size, l);
@@ -256,6 +271,15 @@ them (`tetrahedralize_particles()`).
     \cgalParamType{double, 0 or at least 1}
     \cgalParamDefault{1.5}
   \cgalParamNEnd
+  \cgalParamNBegin{surface_tolerance}
+    \cgalParamDescription{the distance epsilon from the surface that boundary facets should keep, as
+      Mesh_3's `facet_distance`: where the surface curves (or creases below the feature angle) so
+      much that facets of size l* would leave it by more, the size shrinks to what keeps them within
+      epsilon (`Lattice_mesher_3::deviation_samples()`, `Lattice_mesher_3::tolerance_size_samples()`),
+      never below `min_edge_length`; with `number_of_vertices`, l* grows to pay for these vertices}
+    \cgalParamType{double, at least 0}
+    \cgalParamDefault{0: none}
+  \cgalParamNEnd
   \cgalParamNBegin{grading}
     \cgalParamDescription{the largest slope of the size that follows the shape (`Lattice_mesher_3::Graded_sizing_field_3`)}
     \cgalParamType{double}
@@ -335,6 +359,9 @@ lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
   const LM::internal::Shape_sizing_parameters defaults;
   LM::internal::Shape_sizing_parameters s;
   s.cells_across = choose_parameter(get_parameter(np, internal_np::cells_across), defaults.cells_across);
+  s.surface_tolerance = choose_parameter(get_parameter(np, internal_np::surface_tolerance), defaults.surface_tolerance);
+  if(!(s.surface_tolerance >= 0.) || !std::isfinite(s.surface_tolerance))
+    throw std::invalid_argument("lattice_mesh_3(): surface_tolerance() must be 0 (none) or positive and finite");
   s.grading = choose_parameter(get_parameter(np, internal_np::grading), defaults.grading);
   s.min_edge_length = choose_parameter(get_parameter(np, internal_np::min_edge_length), defaults.min_edge_length);
   if(!(s.cells_across == 0. || s.cells_across >= 1.) || !std::isfinite(s.cells_across))

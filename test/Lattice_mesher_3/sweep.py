@@ -9,7 +9,8 @@
 #     two tetrahedra, the boundary a closed manifold (each boundary edge in exactly two boundary
 #     triangles, once in each direction), the smallest dihedral angle at least --min-angle
 #     degrees, the Hausdorff distance to the input (measured by lattice-mesh, --stats) at most
-#     --hausdorff times l*;
+#     --hausdorff times l* and, sample by sample, at most --hausdorff times the mesh's local size
+#     (the longest boundary edge at the sample);
 #   - any other input is open and must be refused with a message naming the problem;
 #   - no crash, no time-out.
 # Models listed in --known-failures (a line "model: reason") may fall short of the angle and
@@ -164,7 +165,7 @@ def run_model(args, model):
         rc, err = None, ''
     seconds = time.time() - start
     row = {'model': os.path.basename(model), 'seconds': round(seconds, 2), 'vertices': '', 'theta_min': '',
-           'hausdorff_over_l': '', 'warnings': err.count('warning:')}
+           'hausdorff_over_l': '', 'hausdorff_over_h': '', 'warnings': err.count('warning:')}
     closed = is_closed(model)
     if rc is None:
         row.update(outcome='fail', detail='no answer within %d s' % args.timeout)
@@ -186,11 +187,14 @@ def run_model(args, model):
         problems, smallest = check_mesh(out_mesh)
         stats = json.load(open(out_stats))
         row.update(vertices=stats['vertices'], theta_min=round(smallest, 2),
-                   hausdorff_over_l=round(stats['hausdorff'] / stats['edge_length'], 3))
+                   hausdorff_over_l=round(stats['hausdorff'] / stats['edge_length'], 3),
+                   hausdorff_over_h=round(stats['hausdorff_over_size'], 3))
         if smallest < args.min_angle:
             problems.append('smallest dihedral angle %.2f < %g' % (smallest, args.min_angle))
         if stats['hausdorff'] > args.hausdorff * stats['edge_length']:
             problems.append('Hausdorff %.4g > %g l* (l* = %.4g)' % (stats['hausdorff'], args.hausdorff, stats['edge_length']))
+        if not 0 <= stats['hausdorff_over_size'] <= args.hausdorff:
+            problems.append('Hausdorff %.3g times the local size > %g' % (stats['hausdorff_over_size'], args.hausdorff))
         if rc == 2:
             problems.append('lattice-mesh reported an invalid mesh')
         row.update(outcome='fail' if problems else 'valid', detail='; '.join(problems))
@@ -209,7 +213,8 @@ def main():
     ap.add_argument('--csv', help='write the rows here')
     ap.add_argument('--timeout', type=int, default=900)
     ap.add_argument('--min-angle', type=float, default=10.)
-    ap.add_argument('--hausdorff', type=float, default=1.5, help='largest Hausdorff distance, in l*')
+    ap.add_argument('--hausdorff', type=float, default=1.5,
+                    help='largest Hausdorff distance, in l* and in the local size (the longest edge near each sample)')
     ap.add_argument('--known-failures', help='file of "model: reason" lines')
     ap.add_argument('--only', help='comma-separated model files to mesh (default: all)')
     ap.add_argument('--option', action='append', default=[], help='a further lattice-mesh argument (repeat)')
@@ -231,13 +236,13 @@ def main():
     for model in models:
         row = run_model(args, os.path.join(args.models, model))
         rows.append(row)
-        print('%-32s %-8s %8s V  theta_min %6s  H/l* %6s  %7.2f s  %s' % (
+        print('%-32s %-8s %8s V  theta_min %6s  H/l* %6s  H/h %6s  %7.2f s  %s' % (
             row['model'], row['outcome'], row['vertices'], row['theta_min'], row['hausdorff_over_l'],
-            row['seconds'], row['detail']), flush=True)
+            row['hausdorff_over_h'], row['seconds'], row['detail']), flush=True)
     if args.csv:
         with open(args.csv, 'w', newline='') as f:
             w = csv.DictWriter(f, fieldnames=['model', 'outcome', 'vertices', 'theta_min', 'hausdorff_over_l',
-                                              'seconds', 'warnings', 'detail'])
+                                              'hausdorff_over_h', 'seconds', 'warnings', 'detail'])
             w.writeheader()
             w.writerows(rows)
     # a listed model may fall short of the quality thresholds, never crash, hang or be refused

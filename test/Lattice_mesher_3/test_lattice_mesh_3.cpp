@@ -185,6 +185,14 @@ TEST(Lattice_mesh_3, SizeFieldGradesTheMesh)
   EXPECT_TRUE(LM::check_tetrahedral_mesh(counted).valid());
   EXPECT_NEAR(double(counted.points.size()), 1500., 225.);
   EXPECT_GT(halves(counted).first, 2. * halves(counted).second) << halves(counted).first << " left, " << halves(counted).second << " right";
+  // 1,000 vertices: h alone needs more at any l*, which no l* can give
+  try {
+    CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::number_of_vertices(1000).size_field(h));
+    ADD_FAILURE() << "no error for a count below what the size field needs";
+  }
+  catch(const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("the sizes below l* alone need about"), std::string::npos) << e.what();
+  }
 }
 
 // A slab 0.3 thick under l* = 0.5: with the size that follows the shape (the default, 1.5 cells
@@ -219,6 +227,31 @@ TEST(Lattice_mesh_3, SizeFollowsAThinPartByDefault)
   EXPECT_GE(q.theta_min.min, 10.);
   EXPECT_THROW(CGAL::lattice_mesh_3(d, field, CGAL::parameters::edge_length(.5).cells_across(.5)), std::invalid_argument);
   EXPECT_THROW(CGAL::lattice_mesh_3(d, field, CGAL::parameters::edge_length(.5).grading(0.)), std::invalid_argument);
+}
+
+// A surface tolerance on the unit sphere at l* = 0.5: facets of size l* leave it by about 0.08;
+// asked to keep within 0.02, the size shrinks near the surface (to about sqrt(2 R 0.02) = 0.2)
+// and the boundary keeps within it.
+TEST(Lattice_mesh_3, SurfaceToleranceBoundsTheDistanceToTheSurface)
+{
+  const Field field;
+  const auto ball = LM::make_sphere_domain_3<K>(Point_3(0., 0., 0.), 1.);
+  const double tolerance = .02;
+  const auto coarse = CGAL::lattice_mesh_3(ball, field, CGAL::parameters::edge_length(.5).number_of_threads(2));
+  const auto fine = CGAL::lattice_mesh_3(ball, field, CGAL::parameters::edge_length(.5).surface_tolerance(tolerance)
+                                                                        .number_of_threads(2));
+  for(const auto* m : { &coarse, &fine }) {
+    const LM::Mesh_validity_report r = LM::check_tetrahedral_mesh(*m);
+    EXPECT_TRUE(r.valid()) << r.message;
+  }
+  const double far = LM::boundary_hausdorff_distance(coarse, ball, .05);
+  const double near = LM::boundary_hausdorff_distance(fine, ball, .05);
+  std::cout << "Hausdorff " << far << " with " << coarse.points.size() << " vertices, " << near << " with "
+            << fine.points.size() << " at the tolerance " << tolerance << "\n";
+  EXPECT_GT(far, 2. * tolerance);
+  EXPECT_LE(near, tolerance);
+  EXPECT_GE(LM::compute_mesh_quality(fine, field, LM::make_lattice(LM::Lattice_type::BCC)).theta_min.min, 10.);
+  EXPECT_THROW(CGAL::lattice_mesh_3(ball, field, CGAL::parameters::edge_length(.5).surface_tolerance(-1.)), std::invalid_argument);
 }
 
 TEST(Lattice_mesh_3, SurfaceMeshOverloadTakesTheFeatureAngle)

@@ -308,6 +308,7 @@ TEST(MeshQuality, JsonHasExactlyTheKeysAndRoundTrips)
   Mesh m = cube_mesh(2);
   Mesh_quality_3 q = compute_mesh_quality(m, Constant_field(), bcc_lattice());
   q.hausdorff = 0.012345678901;
+  q.hausdorff_over_size = 0.75;
   q.edge_length = 0.0625;
   q.seconds.optimize = 1.5;
   q.seconds.mesh = 2.25;
@@ -327,7 +328,7 @@ TEST(MeshQuality, JsonHasExactlyTheKeysAndRoundTrips)
   const std::vector<std::string> expected = {
     "vertices", "tets", "theta_min", "min", "mean", "std", "theta_max", "max", "mean", "std",
     "rho", "min", "mean", "std", "kappa", "min", "mean", "std", "epsilon", "mean", "std",
-    "below20", "below40", "hausdorff", "edge_length", "seconds", "optimize", "mesh", "total" };
+    "below20", "below40", "hausdorff", "hausdorff_over_size", "edge_length", "seconds", "optimize", "mesh", "total" };
   EXPECT_EQ(keys, expected);
   EXPECT_EQ(std::count(json.begin(), json.end(), '{'), std::count(json.begin(), json.end(), '}'));
 
@@ -347,6 +348,7 @@ TEST(MeshQuality, JsonHasExactlyTheKeysAndRoundTrips)
   EXPECT_EQ(json_number(json, "below20"), double(q.below20));
   EXPECT_EQ(json_number(json, "below40"), double(q.below40));
   EXPECT_TRUE(near(json_number(json, "hausdorff"), q.hausdorff));
+  EXPECT_EQ(json_number(json, "hausdorff_over_size"), 0.75);
   EXPECT_EQ(json_number(json, "edge_length"), 0.0625);
   EXPECT_EQ(json_number(json, "optimize"), 1.5);
   EXPECT_EQ(json_number(json, "mesh", section("seconds")), 2.25);
@@ -599,6 +601,19 @@ TEST(Hausdorff, CubeMeshAgainstCubeSurface)
   // a smaller cube in the corner: the surface point (1,1,1) is sqrt(3) * 0.2 from it
   EXPECT_NEAR(boundary_hausdorff_distance(cube_mesh(2, .8), cube, 0.05), .2 * std::sqrt(3.), 1e-12);
   EXPECT_THROW(boundary_hausdorff_distance(cube_mesh(1), cube, 0.), std::invalid_argument);
+}
+
+// Relative to a size: the shifted cube's faces x = 0 and x = 1 are 0.1 away, the size there 0.5
+// and 0.25 (h = 0.5 - 0.25 x).
+TEST(Hausdorff, RelativeToTheLocalSize)
+{
+  const Unit_cube_domain cube;
+  auto size = [](const Point& p) { return .5 - .25 * p.x(); };
+  const Boundary_distances_3 shifted = boundary_distances(cube_mesh(3, 1., .1), cube, 0.05, size);
+  EXPECT_NEAR(shifted.hausdorff, .1, 1e-12);
+  // at x = 1.1 on the mesh (size 0.225) and x = 1 on the surface (0.25): the mesh's side counts
+  EXPECT_NEAR(shifted.over_size, .1 / .225, 1e-12);
+  EXPECT_LT(boundary_distances(cube_mesh(3), cube, 0.05, size).over_size, 1e-12);
 }
 
 } // namespace

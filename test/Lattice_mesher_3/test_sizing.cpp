@@ -12,6 +12,7 @@
 
 #include <CGAL/Lattice_mesher_3/sizing_fields.h>
 #include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
+#include <CGAL/Lattice_mesher_3/Implicit_lattice_domain_3.h>
 #include <CGAL/Lattice_mesher_3/frame_fields.h>
 
 #include <CGAL/Random.h>
@@ -149,6 +150,59 @@ TEST(Sizing, GapBetweenParts)
     EXPECT_NEAR(s.second, .3, .05 / 64 + 1e-9) << s.first;
   }
   EXPECT_GT(facing, 50);
+}
+
+// The unit sphere leaves its tangent plane by sqrt(1 + L^2) - 1 at distance L; the tolerance's
+// size is where that is the tolerance, sqrt(2 e) to first order.
+TEST(Sizing, DeviationOfASphere)
+{
+  const auto ball = LM::make_sphere_domain_3<K>(Point_3(0., 0., 0.), 1.);
+  const auto measures = LM::deviation_samples(ball, .3, .8, 2);
+  ASSERT_GT(measures.size(), 50u);
+  for(const auto& m : measures) {
+    EXPECT_NEAR(std::sqrt(CGAL::squared_distance(m.point, Point_3(CGAL::ORIGIN))), 1., 1e-6);
+    for(int k = 0; k < LM::Deviation_sample_3<K>::scales; ++k)
+      EXPECT_NEAR(m.deviation[std::size_t(k)], std::sqrt(1. + CGAL::square(m.scale(k))) - 1., 1e-6) << k;
+  }
+  const double e = .01;
+  std::vector<std::pair<Point_3, double> > sizes;
+  LM::tolerance_size_samples(measures, e, 1., std::back_inserter(sizes));
+  ASSERT_EQ(sizes.size(), measures.size());
+  // d(h) = e exactly at h = sqrt((1 + e)^2 - 1)
+  for(const auto& s : sizes) EXPECT_NEAR(s.second, std::sqrt(CGAL::square(1. + e) - 1.), .02 * s.second);
+  sizes.clear();
+  LM::tolerance_size_samples(measures, .5, 1., std::back_inserter(sizes));
+  EXPECT_TRUE(sizes.empty());   // within the tolerance at the largest scale
+}
+
+// A crease leaves the plane linearly: d = c L gives h = e / c; a scale cut by a feature curve
+// (-1) is not used, and without any measured scale nothing is written.
+TEST(Sizing, ToleranceSizeOfACrease)
+{
+  LM::Deviation_sample_3<K> m;
+  m.point = Point_3(1., 2., 3.);
+  m.largest_scale = 1.;
+  for(int k = 0; k < m.scales; ++k) m.deviation[std::size_t(k)] = .3 * m.scale(k);
+  std::vector<std::pair<Point_3, double> > sizes;
+  LM::tolerance_size_samples(std::vector<LM::Deviation_sample_3<K> >{ m }, .06, 2., std::back_inserter(sizes));
+  ASSERT_EQ(sizes.size(), 1u);
+  EXPECT_NEAR(sizes[0].second, .2, 1e-12);
+  m.deviation[0] = -1.;
+  sizes.clear();
+  LM::tolerance_size_samples(std::vector<LM::Deviation_sample_3<K> >{ m }, .06, 2., std::back_inserter(sizes));
+  ASSERT_EQ(sizes.size(), 1u);
+  EXPECT_NEAR(sizes[0].second, .2, 1e-12);
+  // below every scale: a curvature, d ~ h^2 from the smallest
+  sizes.clear();
+  LM::tolerance_size_samples(std::vector<LM::Deviation_sample_3<K> >{ m }, .003, 2., std::back_inserter(sizes));
+  ASSERT_EQ(sizes.size(), 1u);
+  EXPECT_NEAR(sizes[0].second, .125 * std::sqrt(.003 / (.3 * .125)), 1e-12);
+  m.deviation.fill(-1.);
+  sizes.clear();
+  LM::tolerance_size_samples(std::vector<LM::Deviation_sample_3<K> >{ m }, .06, 2., std::back_inserter(sizes));
+  EXPECT_TRUE(sizes.empty());
+  EXPECT_THROW(LM::tolerance_size_samples(std::vector<LM::Deviation_sample_3<K> >{ m }, 0., 2., std::back_inserter(sizes)),
+               std::invalid_argument);
 }
 
 // T = min(1, h / (l |T0|)) T0: the cube keeps its directions and proportions and shrinks to h.

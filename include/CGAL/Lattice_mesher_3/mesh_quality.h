@@ -82,6 +82,7 @@ struct Mesh_quality_3
   std::size_t below20 = 0;       ///< tetrahedra with theta_min < 20 degrees
   std::size_t below40 = 0;       ///< tetrahedra with theta_min < 40 degrees
   double hausdorff = -1.;
+  double hausdorff_over_size = -1.;  ///< `Boundary_distances_3::over_size`, negative when not measured
   double edge_length = 0.;       ///< the l* the mesh was made for; 0 when not known (filled by the caller)
   struct Timings
   {
@@ -394,18 +395,33 @@ Mesh_quality_3 compute_mesh_quality(const Tetrahedral_mesh_3<Point_3>& mesh, con
 
 /*!
 \ingroup PkgLatticeMesher3Quality
+Distances between the boundary of a mesh and the surface of its domain
+(`boundary_distances()`).
+*/
+struct Boundary_distances_3
+{
+  double hausdorff = 0.;       ///< the symmetric Hausdorff distance
+  double over_size = 0.;       ///< the largest of the same distances, each over the size at its sample
+};
+
+/*!
+\ingroup PkgLatticeMesher3Quality
 Symmetric Hausdorff distance between the boundary triangles of `mesh` and the boundary surface
-of `domain`, both sampled at `spacing`: the largest of
+of `domain`, both sampled at `spacing`, and the same relative to the size the mesh was made
+for: the largest of
 - the distance to the surface (`domain.project_on_surface()`) of the boundary vertices and of
   points at most `spacing` apart on every boundary triangle, and
-- the distance to the boundary triangles of the points of `domain.sample_surface(spacing)`.
+- the distance to the boundary triangles of the points of `domain.sample_surface(spacing)`;
+each divided, for `Boundary_distances_3::over_size`, by `size` at the sample (the local edge
+length: a graded mesh is held to its own size, a thin part to the size it was given).
 
 \tparam Domain a model of `LatticeMeshDomain_3` whose points are of type `Point_3`
+\tparam Size a callable `double(const Point_3&)`, positive, thread-safe
 \throws std::invalid_argument if `spacing` is not positive or the mesh has no boundary face
 */
-template <typename Point_3, typename Domain>
-double boundary_hausdorff_distance(const Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain,
-                                   double spacing)
+template <typename Point_3, typename Domain, typename Size>
+Boundary_distances_3 boundary_distances(const Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain, double spacing,
+                                        const Size& size)
 {
   typedef typename CGAL::Kernel_traits<Point_3>::Kernel K;
   typedef typename K::Triangle_3 Triangle_3;
@@ -414,31 +430,31 @@ double boundary_hausdorff_distance(const Tetrahedral_mesh_3<Point_3>& mesh, cons
   typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
 
   if(!(spacing > 0.))
-    throw std::invalid_argument("boundary_hausdorff_distance(): the sampling spacing must be positive");
+    throw std::invalid_argument("boundary_distances(): the sampling spacing must be positive");
   if(mesh.boundary_faces.empty())
-    throw std::invalid_argument("boundary_hausdorff_distance(): the mesh has no boundary face");
+    throw std::invalid_argument("boundary_distances(): the mesh has no boundary face");
 
   Triangles triangles;
   triangles.reserve(mesh.boundary_faces.size());
   for(const std::array<int, 3>& f : mesh.boundary_faces)
     triangles.emplace_back(mesh.points[f[0]], mesh.points[f[1]], mesh.points[f[2]]);
-
   // mesh -> surface: a barycentric grid of n x n sub-triangles per face, n set by its longest edge
-  std::vector<double> mesh_to_surface(triangles.size(), 0.);
+  std::vector<Boundary_distances_3> mesh_to_surface(triangles.size());
   internal::parallel_for_rethrow(triangles.size(), [&](std::size_t f) {
     const Eigen::Vector3d a = internal::to_eigen(triangles[f][0]);
     const Eigen::Vector3d ab = internal::to_eigen(triangles[f][1]) - a;
     const Eigen::Vector3d ac = internal::to_eigen(triangles[f][2]) - a;
     const double longest = (std::max)({ ab.norm(), ac.norm(), (ac - ab).norm() });
     const int n = (std::max)(1, int(std::ceil(longest / spacing)));
-    double farthest = 0.;
+    Boundary_distances_3& r = mesh_to_surface[f];
     for(int i = 0; i <= n; ++i)
       for(int j = 0; i + j <= n; ++j) {
         const Eigen::Vector3d q = a + (double(i) / n) * ab + (double(j) / n) * ac;
-        const double d2 = CGAL::to_double(domain.project_on_surface(Point_3(q[0], q[1], q[2])).squared_distance);
-        farthest = (std::max)(farthest, d2);
+        const Point_3 p(q[0], q[1], q[2]);
+        const double d = std::sqrt(CGAL::to_double(domain.project_on_surface(p).squared_distance));
+        r.hausdorff = (std::max)(r.hausdorff, d);
+        r.over_size = (std::max)(r.over_size, d / size(p));
       }
-    mesh_to_surface[f] = farthest;
   });
 
   // surface -> mesh; the tree's search structures are built before the concurrent queries
@@ -447,15 +463,30 @@ double boundary_hausdorff_distance(const Tetrahedral_mesh_3<Point_3>& mesh, cons
   Tree tree(triangles.begin(), triangles.end());
   tree.build();
   tree.accelerate_distance_queries();
-  std::vector<double> surface_to_mesh(samples.size(), 0.);
+  std::vector<Boundary_distances_3> surface_to_mesh(samples.size());
   internal::parallel_for_rethrow(samples.size(), [&](std::size_t s) {
-    surface_to_mesh[s] = CGAL::to_double(tree.squared_distance(samples[s]));
+    const double d = std::sqrt(CGAL::to_double(tree.squared_distance(samples[s])));
+    surface_to_mesh[s] = { d, d / size(samples[s]) };
   });
 
-  double farthest = 0.;
-  for(double d2 : mesh_to_surface) farthest = (std::max)(farthest, d2);
-  for(double d2 : surface_to_mesh) farthest = (std::max)(farthest, d2);
-  return std::sqrt(farthest);
+  Boundary_distances_3 result;
+  for(const std::vector<Boundary_distances_3>* part : { &mesh_to_surface, &surface_to_mesh })
+    for(const Boundary_distances_3& d : *part) {
+      result.hausdorff = (std::max)(result.hausdorff, d.hausdorff);
+      result.over_size = (std::max)(result.over_size, d.over_size);
+    }
+  return result;
+}
+
+/*!
+\ingroup PkgLatticeMesher3Quality
+The symmetric Hausdorff distance of `boundary_distances()`.
+*/
+template <typename Point_3, typename Domain>
+double boundary_hausdorff_distance(const Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain,
+                                   double spacing)
+{
+  return boundary_distances(mesh, domain, spacing, [](const Point_3&) { return 1.; }).hausdorff;
 }
 
 namespace internal {
@@ -527,7 +558,7 @@ inline void print_quality_table(std::ostream& os, const Mesh_quality_3& q)
   internal::write_table_count(os, "theta_min < 40", q.below40, q.tets);
   os << "  " << std::left << std::setw(18) << "Hausdorff" << std::right;
   if(q.hausdorff < 0.) os << std::setw(12) << "-" << "  (not measured)\n";
-  else os << std::setw(12) << q.hausdorff << '\n';
+  else os << std::setw(12) << q.hausdorff << "  (" << q.hausdorff_over_size << " times the local size, at most)\n";
   os << "  " << std::left << std::setw(18) << "seconds" << std::right
      << "optimize " << q.seconds.optimize << ", mesh " << q.seconds.mesh << ", total " << q.seconds.total << '\n';
   os.flags(flags);
@@ -538,7 +569,7 @@ inline void print_quality_table(std::ostream& os, const Mesh_quality_3& q)
 \ingroup PkgLatticeMesher3Quality
 Writes `q` as a JSON object with the keys `vertices`, `tets`, `theta_min` {`min`, `mean`, `std`},
 `theta_max` {`max`, `mean`, `std`}, `rho` and `kappa` {`min`, `mean`, `std`}, `epsilon`
-{`mean`, `std`}, `below20`, `below40`, `hausdorff` (-1 when not measured), `edge_length` and `seconds`
+{`mean`, `std`}, `below20`, `below40`, `hausdorff` and `hausdorff_over_size` (-1 when not measured), `edge_length` and `seconds`
 {`optimize`, `mesh`, `total`}. Numbers have 10 significant digits.
 */
 inline void write_quality_json(std::ostream& os, const Mesh_quality_3& q)
@@ -562,6 +593,7 @@ inline void write_quality_json(std::ostream& os, const Mesh_quality_3& q)
   os << "  \"below20\": " << q.below20 << ",\n"
      << "  \"below40\": " << q.below40 << ",\n"
      << "  \"hausdorff\": " << q.hausdorff << ",\n"
+     << "  \"hausdorff_over_size\": " << q.hausdorff_over_size << ",\n"
      << "  \"edge_length\": " << q.edge_length << ",\n"
      << "  \"seconds\": {\"optimize\": " << q.seconds.optimize << ", \"mesh\": " << q.seconds.mesh
      << ", \"total\": " << q.seconds.total << "}\n"

@@ -237,6 +237,37 @@ private:
           for(int dk = -1; dk <= 1; ++dk)
             if(di != 0 || dj != 0 || dk != 0) offer(i + di, j + dj, k + dk, s);
     }
+    drop_dominated(g);
+  }
+
+  // A cell's sample that one of the cell's node winners w dominates at the sample's own point is
+  // dominated everywhere (h_w + G |x - p_w| <= h_w + G |p_s - p_w| + G |x - p_s| <= h_s + G |x -
+  // p_s|), and w answers the cell's queries: it leaves the cell's list (samples written densely
+  // along chords, as the shape's are, are mostly such: pinion, 780,000 of them).
+  void drop_dominated(Grid& g) const
+  {
+    std::vector<std::int32_t> start(g.cell_start.size(), 0), kept;
+    kept.reserve(g.cell_samples.size());
+    for(std::size_t q = 0; q + 1 < g.cell_start.size(); ++q) {
+      if(g.cell_start[q] < g.cell_start[q + 1]) {
+        const int i = int(q / (std::size_t(g.n[1]) * std::size_t(g.n[2])));
+        const int j = int((q / std::size_t(g.n[2])) % std::size_t(g.n[1]));
+        const int k = int(q % std::size_t(g.n[2]));
+        for(std::int32_t m = g.cell_start[q]; m < g.cell_start[q + 1]; ++m) {
+          const std::int32_t s = g.cell_samples[std::size_t(m)];
+          const Size_sample& own = g.samples[std::size_t(s)];
+          bool dominated = false;
+          for(int c = 0; c < 8 && !dominated; ++c) {
+            const std::int32_t w = g.winner[g.node(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1))];
+            dominated = w >= 0 && w != s && value(g.samples[std::size_t(w)], own.point) <= own.size;
+          }
+          if(!dominated) kept.push_back(s);
+        }
+      }
+      start[q + 1] = std::int32_t(kept.size());
+    }
+    g.cell_start.swap(start);
+    g.cell_samples.swap(kept);
   }
 
   double m_max, m_grading;
@@ -344,6 +375,128 @@ OutputIterator size_samples(const std::vector<Thickness_sample_3<K> >& measures,
     *out++ = std::make_pair(m.point, h);
     if(m.thickness >= 0.)
       for(double t = .5 * h; t <= .5 * m.thickness; t += .5 * h) *out++ = std::make_pair(m.point - t * m.normal, h);
+  }
+  return out;
+}
+
+/*!
+\ingroup PkgLatticeMesher3Sizing
+
+How far the surface leaves its tangent plane around a point of it (see `deviation_samples()`):
+the largest distance to the surface of the points at distances L, L/2, L/4 and L/8 from it in
+eight directions of the tangent plane; -1 at a scale that reaches a feature curve.
+*/
+template <typename K>
+struct Deviation_sample_3
+{
+  static constexpr int scales = 4;
+  typename K::Point_3 point;        ///< on the surface
+  double largest_scale = 0.;        ///< L
+  std::array<double, scales> deviation{}; ///< at L, L/2, L/4, L/8
+
+  double scale(int k) const { return std::ldexp(largest_scale, -k); }
+};
+
+/*!
+\ingroup PkgLatticeMesher3Sizing
+
+Measures the surface's deviation from its tangent plane at the points of
+`domain.sample_surface(spacing)`, at the scales `largest_scale` / 2^k (`Deviation_sample_3`):
+the chord error that boundary facets of those sizes would make there. A scale that comes within
+a tenth of it of a feature curve is not measured (the crease is meshed along the curve, and the
+deviation across it is no chord error); points closer than `spacing / 4` to a curve are skipped.
+`threads` OpenMP threads share the points.
+
+\tparam MeshDomain a model of `LatticeMeshDomain_3`
+*/
+template <typename MeshDomain>
+std::vector<Deviation_sample_3<typename MeshDomain::Geom_traits> >
+deviation_samples(const MeshDomain& domain, double spacing, double largest_scale, int threads = 1)
+{
+  typedef typename MeshDomain::Geom_traits K;
+  typedef typename K::Point_3 Point_3;
+  typedef typename K::Vector_3 Vector_3;
+  typedef Deviation_sample_3<K> Sample;
+  if(!(spacing > 0.) || !(largest_scale > 0.))
+    throw std::invalid_argument("deviation_samples(): the spacing and the largest scale must be positive");
+  std::vector<Point_3> points;
+  domain.sample_surface(spacing, std::back_inserter(points));
+  std::vector<Sample> result(points.size());
+  std::vector<char> kept(points.size(), 0);
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
+  for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(points.size()); ++i) {
+    const double to_curve = domain.number_of_curves() > 0
+        ? std::sqrt(domain.project_on_features(points[std::size_t(i)]).squared_distance) : HUGE_VAL;
+    if(to_curve < .25 * spacing) continue;
+    const auto s = domain.project_on_surface(points[std::size_t(i)]);
+    const Vector_3 n = s.direction;
+    // two unit tangents
+    const Vector_3 a = std::abs(CGAL::to_double(n.x())) < .6 ? Vector_3(1, 0, 0) : Vector_3(0, 1, 0);
+    const auto cross = K().construct_cross_product_vector_3_object();
+    Vector_3 t1 = cross(n, a);
+    t1 = t1 / std::sqrt(CGAL::to_double(t1.squared_length()));
+    const Vector_3 t2 = cross(n, t1);
+    Sample& r = result[std::size_t(i)];
+    r.point = s.point;
+    r.largest_scale = largest_scale;
+    for(int k = 0; k < Sample::scales; ++k) {
+      const double l = r.scale(k);
+      r.deviation[std::size_t(k)] = -1.;
+      if(1.1 * l > to_curve) continue;
+      double d = 0.;
+      for(int j = 0; j < 8; ++j) {
+        const double angle = j * (CGAL_PI / 4.);
+        const Point_3 q = s.point + l * (std::cos(angle) * t1 + std::sin(angle) * t2);
+        d = (std::max)(d, std::sqrt(domain.project_on_surface(q).squared_distance));
+      }
+      r.deviation[std::size_t(k)] = d;
+      kept[std::size_t(i)] = 1;
+    }
+  }
+  std::size_t count = 0;
+  for(std::size_t i = 0; i < result.size(); ++i)
+    if(kept[i]) result[count++] = result[i];
+  result.resize(count);
+  return result;
+}
+
+/*!
+\ingroup PkgLatticeMesher3Sizing
+
+Writes the sizes at which boundary facets stay within `tolerance` of the surface, from the
+measures of `deviation_samples()`: h is the largest measured scale at which the deviation d of
+the surface from its tangent plane is at most `tolerance`, grown towards the next larger scale
+as d grows between the two (d ~ h^a, a in [1, 2]: a crease, a curvature); below every measured
+scale, as a curvature. On a sphere of radius R, d(h) = h^2 / 2R, three times what an
+equilateral facet of edge h leaves between its circumcentre and the sphere; the boundary
+facets of a lattice, less regular and larger than h, leave 2.5 times that (unit sphere, h =
+0.17: 0.0126 where h^2 / 6R is 0.005), hence d itself as the bound. Nothing is written where
+the largest measured scale is within the
+tolerance. Sizes at or above `max_size` are not written.
+\returns the output iterator, past the `std::pair<Point_3, double>` written
+*/
+template <typename K, typename OutputIterator>
+OutputIterator tolerance_size_samples(const std::vector<Deviation_sample_3<K> >& measures, double tolerance,
+                                      double max_size, OutputIterator out)
+{
+  typedef Deviation_sample_3<K> Sample;
+  if(!(tolerance > 0.))
+    throw std::invalid_argument("tolerance_size_samples(): the tolerance must be positive");
+  const double most = tolerance;
+  for(const Sample& m : measures) {
+    auto d = [&](int k) { return m.deviation[std::size_t(k)]; };
+    int k = 0;
+    while(k < Sample::scales && d(k) < 0.) ++k;   // the scales that reach a curve
+    // within the tolerance at the largest measured scale: no evidence for a smaller size
+    if(k == Sample::scales || d(k) <= most) continue;
+    while(k + 1 < Sample::scales && d(k + 1) > most) ++k;   // k: the smallest scale beyond it
+    double h;
+    if(k + 1 == Sample::scales) h = m.scale(k) * std::sqrt(most / d(k));
+    else {
+      const double a = (std::min)(2., (std::max)(1., std::log2(d(k) / (std::max)(d(k + 1), 1e-300))));
+      h = (std::min)(m.scale(k + 1) * std::pow(most / (std::max)(d(k + 1), 1e-300), 1. / a), m.scale(k));
+    }
+    if(h < max_size) *out++ = std::make_pair(m.point, h);
   }
   return out;
 }

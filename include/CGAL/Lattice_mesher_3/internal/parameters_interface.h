@@ -25,5 +25,6 @@ CGAL_add_named_parameter(gradient_tolerance_t, gradient_tolerance, gradient_tole
 CGAL_add_named_parameter(number_of_smoothing_rounds_t, number_of_smoothing_rounds, number_of_smoothing_rounds)
 CGAL_add_named_parameter(size_field_t, size_field, size_field)
 CGAL_add_named_parameter(cells_across_t, cells_across, cells_across)
+CGAL_add_named_parameter(surface_tolerance_t, surface_tolerance, surface_tolerance)
 CGAL_add_named_parameter(grading_t, grading, grading)
 CGAL_add_named_parameter(min_edge_length_t, min_edge_length, min_edge_length)
