@@ -24,6 +24,7 @@
 #include <CGAL/Lattice_mesher_3/mesh_quality.h>
 #include <CGAL/Lattice_mesher_3/sizing_fields.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -108,6 +109,17 @@ struct Options
   int smoothing_rounds = 2;
 };
 
+// The options of the size that follows the shape.
+static LM::internal::Shape_sizing_parameters shape_sizing(const Options& o)
+{
+  LM::internal::Shape_sizing_parameters s;
+  s.cells_across = o.cells_across;
+  s.surface_tolerance = o.surface_tolerance;
+  s.grading = o.grading;
+  s.min_edge_length = o.min_edge_length;
+  return s;
+}
+
 static Options parse(int argc, char** argv)
 {
   Options o;
@@ -156,14 +168,11 @@ static Options parse(int argc, char** argv)
   if(o.vertices != 0. && !(o.vertices >= 4.))
     throw std::invalid_argument("--vertices must be at least 4");
   LM::lattice_type_from_name(o.lattice);   // validates the name
-  if(!(o.cells_across == 0. || o.cells_across >= 1.) || !std::isfinite(o.cells_across))
-    throw std::invalid_argument("--cells-across must be 0 or at least 1");
-  if(!(o.grading > 0.) || !std::isfinite(o.grading))
-    throw std::invalid_argument("--grading must be positive");
-  if(!(o.surface_tolerance >= 0.) || !std::isfinite(o.surface_tolerance))
-    throw std::invalid_argument("--surface-tolerance must be 0 (none) or positive");
-  if(!(o.min_edge_length >= 0.) || !std::isfinite(o.min_edge_length))
-    throw std::invalid_argument("--min-edge-length must be positive");
+  shape_sizing(o).check([](const char* parameter) {   // cells_across -> --cells-across
+    std::string option = std::string("--") + parameter;
+    std::replace(option.begin(), option.end(), '_', '-');
+    return option;
+  });
   return o;
 }
 
@@ -217,11 +226,7 @@ template <typename Domain>
 static Field shape_sized_field(const Domain& domain, const Field& field, LM::Lattice_mesher_parameters& p, const Options& o)
 {
   const auto start = std::chrono::steady_clock::now();
-  LM::internal::Shape_sizing_parameters s;
-  s.cells_across = o.cells_across;
-  s.grading = o.grading;
-  s.min_edge_length = o.min_edge_length;
-  s.surface_tolerance = o.surface_tolerance;
+  const LM::internal::Shape_sizing_parameters s = shape_sizing(o);
   LM::internal::Shape_sizing_report report;
   // the user's sizes: the envelope of the file's samples
   std::function<double(const Point_3&)> user = LM::internal::Unbounded_size();

@@ -24,6 +24,7 @@
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace CGAL {
 
@@ -69,6 +70,21 @@ struct Combined_size_3
 struct Shape_sizing_parameters
 {
   double cells_across = 1.5, surface_tolerance = 0., grading = .3, min_edge_length = 0.;
+
+  // throws std::invalid_argument for a value out of range, naming the parameter as `name`
+  // spells it (`name("cells_across")`: a named parameter, a command-line option)
+  template <typename Name>
+  void check(const Name& name) const
+  {
+    auto require = [&](bool ok, const char* parameter, const char* what) {
+      if(!ok) throw std::invalid_argument(name(parameter) + " must be " + what);
+    };
+    require((cells_across == 0. || cells_across >= 1.) && std::isfinite(cells_across), "cells_across",
+            "0 (no size that follows the shape) or at least 1");
+    require(surface_tolerance >= 0. && std::isfinite(surface_tolerance), "surface_tolerance", "0 (none) or positive and finite");
+    require(grading > 0. && std::isfinite(grading), "grading", "positive and finite");
+    require(min_edge_length >= 0. && std::isfinite(min_edge_length), "min_edge_length", "0 (l*/4) or positive and finite");
+  }
 };
 
 // What the sizing did: the samples of the shape's size, the cells across and the smallest size.
@@ -360,16 +376,9 @@ lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
   LM::internal::Shape_sizing_parameters s;
   s.cells_across = choose_parameter(get_parameter(np, internal_np::cells_across), defaults.cells_across);
   s.surface_tolerance = choose_parameter(get_parameter(np, internal_np::surface_tolerance), defaults.surface_tolerance);
-  if(!(s.surface_tolerance >= 0.) || !std::isfinite(s.surface_tolerance))
-    throw std::invalid_argument("lattice_mesh_3(): surface_tolerance() must be 0 (none) or positive and finite");
   s.grading = choose_parameter(get_parameter(np, internal_np::grading), defaults.grading);
   s.min_edge_length = choose_parameter(get_parameter(np, internal_np::min_edge_length), defaults.min_edge_length);
-  if(!(s.cells_across == 0. || s.cells_across >= 1.) || !std::isfinite(s.cells_across))
-    throw std::invalid_argument("lattice_mesh_3(): cells_across() must be 0 (no size that follows the shape) or at least 1");
-  if(!(s.grading > 0.) || !std::isfinite(s.grading))
-    throw std::invalid_argument("lattice_mesh_3(): grading() must be positive and finite");
-  if(!(s.min_edge_length >= 0.) || !std::isfinite(s.min_edge_length))
-    throw std::invalid_argument("lattice_mesh_3(): min_edge_length() must not be negative");
+  s.check([](const char* parameter) { return "lattice_mesh_3(): " + std::string(parameter) + "()"; });
   const auto sized = LM::internal::sized_field<Traits>(domain, field, size, p, s);
   return LM::internal::run_lattice_mesher<Traits>(domain, sized, p, LM::internal::unwrap(visitor));
 }
