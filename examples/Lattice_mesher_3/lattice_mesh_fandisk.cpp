@@ -12,8 +12,9 @@
 // curves), follows the optimization round by round with a visitor, checks the output mesh,
 // prints its quality measured in the isotropic space and writes it in the Medit format.
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+// first, as in the README's listing: the front function's header includes all it needs
 #include <CGAL/lattice_mesh_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
 #include <CGAL/Lattice_mesher_3/check_mesh.h>
 #include <CGAL/Lattice_mesher_3/mesh_quality.h>

@@ -17,6 +17,7 @@
 
 #include <CGAL/Lattice_particle_mesher_3.h>
 #include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
+#include <CGAL/Lattice_mesher_3/make_lattice_domain_3.h>
 #include <CGAL/Lattice_mesher_3/sizing_fields.h>
 
 #include <cmath>
@@ -191,6 +192,31 @@ sized_field(const MeshDomain& domain, const FrameField& field, const UserSize& u
   }
   return sized(size, l);
 }
+// The lattice domain of a Mesh_3 domain, sampled for the l* of `np`: edge_length(), or for
+// number_of_vertices() the l* of that count in the bounding box, then, if the domain's volume
+// asks for a finer one, in that volume.
+template <typename MeshDomain, typename NamedParameters>
+Polyhedral_lattice_domain_3<Mesh_domain_kernel<MeshDomain> > lattice_domain_for(const MeshDomain& domain, const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const double length = choose_parameter(get_parameter(np, internal_np::edge_length), 0.);
+  if(length > 0. && std::isfinite(length))
+    return make_lattice_domain_3(domain, parameters::edge_length(length));
+  const double n = choose_parameter(get_parameter(np, internal_np::number_of_vertices), 0.);
+  const Lattice_type lattice = choose_parameter(get_parameter(np, internal_np::lattice_param), Lattice_type::BCC);
+  const double per_cube = lattice == Lattice_type::FCC ? 4. : 2.;
+  const Bbox_3 b = domain.bbox();
+  const double box = (b.xmax() - b.xmin()) * (b.ymax() - b.ymin()) * (b.zmax() - b.zmin());
+  if(!(n >= 1.) || !std::isfinite(n) || !(box > 0.))
+    return make_lattice_domain_3(domain);   // the mesher names what is wrong with the parameters
+  const double l = std::cbrt(per_cube * box / n);
+  Polyhedral_lattice_domain_3<Mesh_domain_kernel<MeshDomain> > result = make_lattice_domain_3(domain, parameters::edge_length(l));
+  const double finer = std::cbrt(per_cube * result.volume() / n);
+  if(finer < l / 1.5) return make_lattice_domain_3(domain, parameters::edge_length(finer));
+  return result;
+}
+
 } // namespace internal
 } // namespace Lattice_mesher_3
 
@@ -201,7 +227,7 @@ Meshes `domain` with tetrahedra whose vertices form a BCC or FCC lattice aligned
 optimizes particles carrying a Gaussian Hole Kernel (`Lattice_particle_mesher_3`) and connects
 them (`tetrahedralize_particles()`).
 
-\tparam MeshDomain a model of `LatticeMeshDomain_3`
+\tparam MeshDomain a model of `LatticeMeshDomain_3`, or of Mesh_3's `MeshDomain_3` (`Polyhedral_mesh_domain_with_features_3`, `Labeled_mesh_domain_3`, ...), which it meshes through `Lattice_mesher_3::make_lattice_domain_3()`
 \tparam FrameField a model of `FrameField_3`
 
 \cgalNamedParamsBegin
@@ -327,7 +353,7 @@ than 5e7 particles
 */
 template <typename MeshDomain, typename FrameField,
           typename NamedParameters = parameters::Default_named_parameters>
-Lattice_mesher_3::Tetrahedral_mesh_3<typename MeshDomain::Geom_traits::Point_3>
+Lattice_mesher_3::Tetrahedral_mesh_3<typename Lattice_mesher_3::internal::Domain_point_3<MeshDomain>::type>
 lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
                const NamedParameters& np = parameters::default_values())
 {
@@ -335,6 +361,9 @@ lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
   using parameters::get_parameter;
   using parameters::is_default_parameter;
   namespace LM = Lattice_mesher_3;
+  if constexpr(!LM::internal::Is_lattice_mesh_domain_3<MeshDomain>::value)
+    return lattice_mesh_3(LM::internal::lattice_domain_for(domain, np), field, np);
+  else {
 
   static_assert(is_default_parameter<NamedParameters, internal_np::feature_angle_t>::value,
                 "lattice_mesh_3(domain, ...): feature_angle() applies when meshing a surface mesh; "
@@ -381,6 +410,7 @@ lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
   s.check([](const char* parameter) { return "lattice_mesh_3(): " + std::string(parameter) + "()"; });
   const auto sized = LM::internal::sized_field<Traits>(domain, field, size, p, s);
   return LM::internal::run_lattice_mesher<Traits>(domain, sized, p, LM::internal::unwrap(visitor));
+  }
 }
 
 /*!

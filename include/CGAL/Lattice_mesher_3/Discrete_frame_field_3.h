@@ -14,6 +14,7 @@
 #include <CGAL/Lattice_mesher_3/internal/particle_neighbors.h>
 
 #include <CGAL/Bbox_3.h>
+#include <CGAL/squared_distance_3.h>
 
 #include <Eigen/Dense>
 

@@ -98,7 +98,16 @@ public:
   /// builds the domain bounded by `surface`. Throws `std::invalid_argument` (the message names
   /// the problem) if `feature_angle` is not in (0, 180] or if `surface` does not bound a volume.
   explicit Polyhedral_lattice_domain_3(const Surface_mesh& surface, double feature_angle = 60.)
-    : m_data(std::make_shared<const Data>(surface, feature_angle))
+    : m_data(std::make_shared<const Data>(surface, feature_angle, nullptr))
+  {}
+
+  /// builds the domain bounded by `surface` with the feature curves `curves` instead of its
+  /// sharp edges (as Mesh_3's `add_features()`): polylines on the surface, a closed one
+  /// repeating its first point at its end. The corners are `corners` and the end points of the
+  /// open curves. Throws `std::invalid_argument` if `surface` does not bound a volume.
+  Polyhedral_lattice_domain_3(const Surface_mesh& surface, const std::vector<Polyline>& curves,
+                              const std::vector<Point_3>& corners = std::vector<Point_3>())
+    : m_data(std::make_shared<const Data>(surface, 0., &curves, &corners))
   {}
 
   /// \name LatticeMeshDomain_3
@@ -185,7 +194,7 @@ public:
   std::size_t number_of_self_intersections() const { return m_data->self_intersections; }
   /// the feature polylines; a closed curve repeats its first point at its end
   const std::vector<Polyline>& curves() const { return m_data->curves; }
-  /// the feature angle, in degrees, used to detect the sharp edges
+  /// the feature angle, in degrees, used to detect the sharp edges (0: the curves were given)
   double feature_angle() const { return m_data->feature_angle; }
 
 private:
@@ -336,9 +345,11 @@ private:
     internal::Surface_cell_grid_3 cells;
     double volume, area, curves_length = 0.;
 
-    Data(const Surface_mesh& input, double angle)
+    // `curves` and `corners` null: the features are the sharp edges at `angle`
+    Data(const Surface_mesh& input, double angle, const std::vector<Polyline>* given_curves,
+         const std::vector<Point_3>* given_corners = nullptr)
       : feature_angle(angle),
-        surface(prepare(input)),
+        surface(prepare(input, given_curves == nullptr)),
         winding(triangles(surface)),
         boundary(bounding_part())
     {
@@ -357,7 +368,8 @@ private:
       });
       volume = CGAL::to_double(PMP::volume(surface));   // overlaps count twice: a bound, for the sizing
       area = CGAL::to_double(PMP::area(boundary));
-      build_curves();
+      if(given_curves) take_curves(*given_curves, *given_corners);
+      else build_curves();
       for(std::size_t c = 0; c < curves.size(); ++c)
         for(std::size_t i = 0; i + 1 < curves[c].size(); ++i) {
           segments.emplace_back(curves[c][i], curves[c][i + 1]);
@@ -376,10 +388,10 @@ private:
     }
 
     // Validates and repairs a copy of the input (see the class documentation).
-    Surface_mesh prepare(const Surface_mesh& input)
+    Surface_mesh prepare(const Surface_mesh& input, bool detect_features)
     {
       namespace PMP = CGAL::Polygon_mesh_processing;
-      if(!(feature_angle > 0. && feature_angle <= 180.))
+      if(detect_features && !(feature_angle > 0. && feature_angle <= 180.))
         throw std::invalid_argument("feature angle " + std::to_string(feature_angle)
                                     + " is outside (0, 180] degrees");
       for(typename Surface_mesh::Vertex_index v : input.vertices()) { // the indices of the input
@@ -449,6 +461,23 @@ private:
       for(Face_index f : buried) CGAL::Euler::remove_face(part.halfedge(f), part);
       part.collect_garbage();
       return part;
+    }
+
+    // The given polylines without repeated consecutive points (their segments give tangents),
+    // the given corners and the ends of the open ones, each once.
+    void take_curves(const std::vector<Polyline>& given, const std::vector<Point_3>& given_corners)
+    {
+      corners = given_corners;
+      for(const Polyline& g : given) {
+        Polyline curve;
+        for(const Point_3& p : g)
+          if(curve.empty() || p != curve.back()) curve.push_back(p);
+        if(curve.size() < 2) continue;
+        if(curve.front() != curve.back()) { corners.push_back(curve.front()); corners.push_back(curve.back()); }
+        curves.push_back(std::move(curve));
+      }
+      std::sort(corners.begin(), corners.end());
+      corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
     }
 
     void build_curves()

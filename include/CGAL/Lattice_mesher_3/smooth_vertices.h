@@ -15,6 +15,7 @@
 #include <CGAL/Lattice_mesher_3/mesh_quality.h>
 
 #include <CGAL/enum.h>
+#include <CGAL/Kernel/global_functions_3.h>
 
 #include <algorithm>
 #include <array>
