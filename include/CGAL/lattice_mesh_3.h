@@ -18,6 +18,7 @@
 #include <CGAL/Lattice_particle_mesher_3.h>
 #include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
 #include <CGAL/Lattice_mesher_3/make_lattice_domain_3.h>
+#include <CGAL/Lattice_mesher_3/convert_to_c3t3.h>
 #include <CGAL/Lattice_mesher_3/sizing_fields.h>
 
 #include <cmath>
@@ -411,6 +412,47 @@ lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
   const auto sized = LM::internal::sized_field<Traits>(domain, field, size, p, s);
   return LM::internal::run_lattice_mesher<Traits>(domain, sized, p, LM::internal::unwrap(visitor));
   }
+}
+
+namespace Lattice_mesher_3 {
+namespace internal {
+template <typename C, typename = void> struct Is_c3t3 : std::false_type {};
+template <typename C>
+struct Is_c3t3<C, std::void_t<typename C::Triangulation, typename C::Cells_in_complex_iterator> > : std::true_type {};
+} // namespace internal
+} // namespace Lattice_mesher_3
+
+/*!
+\ingroup PkgLatticeMesher3Ref
+
+Meshes `domain` as `lattice_mesh_3(domain, field, np)` does and returns the mesh as a
+`Mesh_complex_3_in_triangulation_3` (`Lattice_mesher_3::convert_to_c3t3()`), which Mesh_3's
+optimizers and writers and `CGAL::tetrahedral_isotropic_remeshing()` (through
+`CGAL::convert_to_triangulation_3()`) take. For a Mesh_3 domain, the cells carry the
+subdomain index the domain gives at their centroid, the boundary facets the surface patch index
+where the segment across them meets the surface, and the feature edges and corners the domain's
+curve and corner indices.
+
+\tparam C3t3 a `Mesh_complex_3_in_triangulation_3` whose triangulation is
+`Mesh_triangulation_3<MeshDomain>::type` for a Mesh_3 domain, e.g.
+`Lattice_mesher_3::Mesh_complex_3<K>` for a `LatticeMeshDomain_3`
+*/
+template <typename C3t3, typename MeshDomain, typename FrameField,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::enable_if_t<Lattice_mesher_3::internal::Is_c3t3<C3t3>::value, C3t3>
+lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
+               const NamedParameters& np = parameters::default_values())
+{
+  namespace LM = Lattice_mesher_3;
+  C3t3 c3t3;
+  if constexpr(LM::internal::Is_lattice_mesh_domain_3<MeshDomain>::value)
+    LM::convert_to_c3t3(lattice_mesh_3(domain, field, np), domain, c3t3);
+  else {
+    const auto lattice_domain = LM::internal::lattice_domain_for(domain, np);
+    const LM::internal::Mesh_domain_indices<C3t3, MeshDomain> indices(domain, typename C3t3::Subdomain_index(1));
+    LM::internal::convert_to_c3t3(lattice_mesh_3(lattice_domain, field, np), lattice_domain, indices, c3t3);
+  }
+  return c3t3;
 }
 
 /*!

@@ -15,12 +15,21 @@
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/lattice_mesh_3.h>
+#include <CGAL/Lattice_mesher_3/Implicit_lattice_domain_3.h>
 #include <CGAL/Lattice_mesher_3/check_mesh.h>
 #include <CGAL/Lattice_mesher_3/mesh_quality.h>
+#include <CGAL/IO/File_medit.h>
+#include <CGAL/IO/output_to_vtu.h>
+#include <CGAL/exude_mesh_3.h>
+#include <CGAL/odt_optimize_mesh_3.h>
+#include <CGAL/perturb_mesh_3.h>
+#include <CGAL/tetrahedral_remeshing.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
+#include <sstream>
 #include <vector>
 
 namespace {
@@ -122,6 +131,97 @@ TEST(Mesh_3_domains, AddedFeatureCurves)
   for(const Point_3& p : mesh.points)
     if(std::abs(std::abs(p.z()) - 1.) < 1e-3 && std::abs(std::hypot(p.x(), p.y()) - 1.) < 1e-3) ++on_rims;
   EXPECT_GE(double(on_rims), .7 * 4. * CGAL_PI / l);
+}
+
+// Sum of the volumes of the cells in the complex.
+template <typename C3t3>
+double complex_volume(const C3t3& c3t3)
+{
+  auto point = c3t3.triangulation().geom_traits().construct_point_3_object();
+  double volume = 0.;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    volume += CGAL::volume(point(c->vertex(0)->point()), point(c->vertex(1)->point()),
+                           point(c->vertex(2)->point()), point(c->vertex(3)->point()));
+  return volume;
+}
+
+// A C3T3 out of a polyhedral domain with features: valid as a regular triangulation, its
+// complex the cube with its 6 surface patches, 12 curves and 8 corners, and Mesh_3's writers,
+// optimizers and the tetrahedral remeshing take it.
+TEST(Mesh_3_domains, C3t3OfAPolyhedralDomainWithFeatures)
+{
+  typedef CGAL::Surface_mesh<Point_3> Mesh;
+  typedef CGAL::Polyhedral_mesh_domain_with_features_3<K, Mesh> Domain;
+  typedef CGAL::Mesh_triangulation_3<Domain>::type Tr;
+  typedef CGAL::Mesh_complex_3_in_triangulation_3<Tr, Domain::Corner_index, Domain::Curve_index> C3t3;
+  Domain domain(LM::make_cube_surface_3<K>(0., 1.));
+  domain.detect_features();
+  C3t3 c3t3 = CGAL::lattice_mesh_3<C3t3>(domain, Field(), CGAL::parameters::edge_length(.2).number_of_threads(2));
+  EXPECT_TRUE(c3t3.triangulation().is_valid());
+  EXPECT_NEAR(complex_volume(c3t3), 1., 1e-6);
+  std::set<Domain::Surface_patch_index> patches;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+    patches.insert(c3t3.surface_patch_index(*f));
+  EXPECT_EQ(patches.size(), 6u);
+  std::set<Domain::Curve_index> curves;
+  for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e)
+    curves.insert(c3t3.curve_index(*e));
+  EXPECT_EQ(curves.size(), 12u);
+  EXPECT_EQ(c3t3.number_of_vertices_in_complex(), 8u);
+  std::size_t by_dimension[4] = { 0, 0, 0, 0 };
+  for(auto v = c3t3.triangulation().finite_vertices_begin(); v != c3t3.triangulation().finite_vertices_end(); ++v)
+    ++by_dimension[c3t3.in_dimension(v)];
+  EXPECT_EQ(by_dimension[0], 8u);
+  EXPECT_GT(by_dimension[1], 0u);
+  EXPECT_GT(by_dimension[2], 0u);
+  EXPECT_GT(by_dimension[3], 0u);
+
+  std::ostringstream medit, vtu;
+  CGAL::IO::output_to_medit(medit, c3t3);
+  CGAL::IO::output_to_vtu(vtu, c3t3, CGAL::IO::ASCII);
+  EXPECT_NE(medit.str().find("Tetrahedra"), std::string::npos);
+  EXPECT_NE(vtu.str().find("UnstructuredGrid"), std::string::npos);
+
+  C3t3 copy(c3t3);
+  EXPECT_EQ(copy.number_of_cells_in_complex(), c3t3.number_of_cells_in_complex());
+  namespace P = CGAL::parameters;
+  CGAL::odt_optimize_mesh_3(c3t3, domain, P::max_iteration_number = 2);
+  CGAL::perturb_mesh_3(c3t3, domain, P::time_limit = 2);
+  CGAL::exude_mesh_3(c3t3, P::time_limit = 2);
+  EXPECT_TRUE(c3t3.triangulation().is_valid());
+  // the optimizers decide again which cells are in the complex by their circumcenters, without
+  // the protecting balls make_mesh_3() puts on the features: a few cells along the edges leave
+  EXPECT_NEAR(complex_volume(c3t3), 1., 1e-2);
+
+  auto tr = CGAL::convert_to_triangulation_3(std::move(copy));
+  CGAL::tetrahedral_isotropic_remeshing(tr, .2, CGAL::parameters::number_of_iterations(1));
+  EXPECT_TRUE(tr.is_valid());
+}
+
+// A C3T3 out of an implicit Labeled_mesh_domain_3: subdomain 1 and one surface patch.
+TEST(Mesh_3_domains, C3t3OfAnImplicitDomain)
+{
+  typedef CGAL::Labeled_mesh_domain_3<K> Domain;
+  typedef CGAL::Mesh_triangulation_3<Domain>::type Tr;
+  typedef CGAL::Mesh_complex_3_in_triangulation_3<Tr> C3t3;
+  const Domain domain = Domain::create_implicit_mesh_domain(unit_sphere, K::Sphere_3(CGAL::ORIGIN, 4.));
+  const C3t3 c3t3 = CGAL::lattice_mesh_3<C3t3>(domain, Field(), CGAL::parameters::edge_length(.25).number_of_threads(2));
+  EXPECT_TRUE(c3t3.triangulation().is_valid());
+  std::set<Domain::Subdomain_index> subdomains;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    subdomains.insert(c3t3.subdomain_index(c));
+  EXPECT_EQ(subdomains, std::set<Domain::Subdomain_index>{ 1 });
+  std::set<Domain::Surface_patch_index> patches;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+    patches.insert(c3t3.surface_patch_index(*f));
+  EXPECT_EQ(patches, (std::set<Domain::Surface_patch_index>{ { 0, 1 } }));   // as the domain names it
+  EXPECT_NEAR(complex_volume(c3t3), 4. / 3. * CGAL_PI, 4. * CGAL_PI * .375 * .375 / 8.);
+
+  // and of our own domain, in Lattice_mesher_3::Mesh_complex_3
+  const auto ball = LM::make_sphere_domain_3<K>(Point_3(0., 0., 0.), 1.);
+  const LM::Mesh_complex_3<K> ours = CGAL::lattice_mesh_3<LM::Mesh_complex_3<K> >(ball, Field(), CGAL::parameters::edge_length(.25));
+  EXPECT_TRUE(ours.triangulation().is_valid());
+  EXPECT_NEAR(complex_volume(ours), 4. / 3. * CGAL_PI, 4. * CGAL_PI * .375 * .375 / 8.);
 }
 
 } // namespace

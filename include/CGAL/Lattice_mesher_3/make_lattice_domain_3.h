@@ -90,7 +90,8 @@ void feature_polylines(const MeshDomain& domain, double spacing,
     const Point_3& start = std::get<1>(c).first;
     const Point_3& end = std::get<2>(c).first;
     const double length = CGAL::to_double(domain.curve_length(std::get<0>(c)));
-    const std::size_t n = (std::max)(std::size_t(1), std::size_t(std::ceil(length / spacing)));
+    // a loop keeps three segments at least: the curves keep the order of get_curves()
+    const std::size_t n = (std::max)(std::size_t(start == end ? 3 : 1), std::size_t(std::ceil(length / spacing)));
     std::vector<Point_3> curve{ start };
     for(std::size_t k = 1; k < n; ++k)
       curve.push_back(domain.construct_point_on_curve(start, std::get<0>(c), length * double(k) / double(n)));
