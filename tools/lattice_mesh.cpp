@@ -15,6 +15,7 @@
 #include <CGAL/lattice_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/Discrete_frame_field_3.h>
 #include <CGAL/Lattice_mesher_3/IO/frame_field.h>
+#include <CGAL/Lattice_mesher_3/IO/gmsh.h>
 #include <CGAL/Lattice_mesher_3/IO/medit.h>
 #include <CGAL/Lattice_mesher_3/IO/sizing_field.h>
 #include <CGAL/Lattice_mesher_3/IO/vtu.h>
@@ -29,6 +30,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <functional>
 #include <iomanip>
@@ -37,6 +39,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace LM = CGAL::Lattice_mesher_3;
 typedef CGAL::Epick K;
@@ -56,7 +59,7 @@ static const char* usage =
   "                    [--max-rounds R] [--no-flips] [--smoothing-rounds N] [--quiet]\n"
   "                    [--size-field FILE] [--cells-across C] [--surface-tolerance E]\n"
   "                    [--grading G] [--min-edge-length H]\n"
-  "                    -o OUT.mesh [--vtu OUT.vtu] [--stats OUT.json]\n"
+  "                    -o OUT.mesh|OUT.vtu|OUT.msh [-o ...] [--stats OUT.json]\n"
   "       lattice-mesh [INPUT | --domain ...] [--field ...] --write-field OUT.txt --field-spacing H\n"
   "  INPUT            closed triangle surface (OFF, OBJ, STL, PLY)\n"
   "  --domain         built-in shape: cube [0.1,1.1]^3, cube11 [1,11]^3, unit sphere,\n"
@@ -94,11 +97,15 @@ static const char* usage =
   "  --no-flips, --smoothing-rounds N\n"
   "                   connectivity flips and rounds of worst-element smoothing and edge\n"
   "                   contractions after the tetrahedralization (default: flips on, 2 rounds;\n"
-  "                   0 keeps the particles as they are)\n";
+  "                   0 keeps the particles as they are)\n"
+  "  -o               the mesh, in the format of the extension: .mesh (Medit), .vtu (VTK, with\n"
+  "                   theta_min, rho and kappa per tetrahedron), .msh (Gmsh 4.1); several allowed\n"
+  "  --stats          the quality figures as JSON\n";
 
 struct Options
 {
-  std::string input, domain, lattice = "bcc", field = "identity", field_data, write_field, out, vtu, stats, size_field;
+  std::string input, domain, lattice = "bcc", field = "identity", field_data, write_field, stats, size_field;
+  std::vector<std::string> outputs;
   double edge_length = 0., vertices = 0., feature_angle = 60., field_spacing = 0.;
   double cells_across = LM::internal::Shape_sizing_parameters().cells_across;
   double surface_tolerance = LM::internal::Shape_sizing_parameters().surface_tolerance;
@@ -120,6 +127,18 @@ static LM::internal::Shape_sizing_parameters shape_sizing(const Options& o)
   return s;
 }
 
+enum class Format { MEDIT, VTU, GMSH };
+
+// The format of an output file, by its extension.
+static Format output_format(const std::string& name)
+{
+  const std::string extension = std::filesystem::path(name).extension().string();
+  if(extension == ".mesh") return Format::MEDIT;
+  if(extension == ".vtu") return Format::VTU;
+  if(extension == ".msh") return Format::GMSH;
+  throw std::invalid_argument("-o " + name + ": unknown format '" + extension + "' (expected .mesh, .vtu or .msh)");
+}
+
 static Options parse(int argc, char** argv)
 {
   Options o;
@@ -139,8 +158,7 @@ static Options parse(int argc, char** argv)
     else if(a == "--threads") o.threads = int(args.integer(a, 1, 1024));
     else if(a == "--coarse-levels") o.coarse_levels = int(args.integer(a, -1, std::numeric_limits<int>::max()));   // the mesher checks the range
     else if(a == "--max-rounds") o.max_rounds = int(args.integer(a, -1, std::numeric_limits<int>::max()));
-    else if(a == "-o" || a == "--output") o.out = args.value(a);
-    else if(a == "--vtu") o.vtu = args.value(a);
+    else if(a == "-o" || a == "--output") o.outputs.push_back(args.value(a));
     else if(a == "--stats") o.stats = args.value(a);
     else if(a == "--quiet") o.quiet = true;
     else if(a == "--no-flips") o.flip = false;
@@ -160,7 +178,8 @@ static Options parse(int argc, char** argv)
     if(!(o.field_spacing > 0.)) throw std::invalid_argument("--field-spacing must be positive");
     return o;   // no mesh: the other options do not apply
   }
-  if(o.out.empty()) throw std::invalid_argument("an output file is required: -o OUT.mesh");
+  if(o.outputs.empty()) throw std::invalid_argument("an output file is required: -o OUT.mesh (or .vtu, .msh)");
+  for(const std::string& out : o.outputs) output_format(out);   // an unknown extension fails before any work
   if((o.edge_length != 0.) == (o.vertices != 0.))
     throw std::invalid_argument("give exactly one of --edge-length L and --vertices N");
   if(o.edge_length != 0. && !(o.edge_length > 0.))
@@ -299,8 +318,25 @@ static int run(const Domain& domain, const Field_choice& choice, const Options& 
     if(!os) throw std::runtime_error("cannot write '" + name + "'");
     return os;
   };
-  { std::ofstream os = open(o.out); LM::write_medit(os, mesh); }
-  if(!o.vtu.empty()) { std::ofstream os = open(o.vtu); LM::write_vtu(os, mesh); }
+  for(const std::string& out : o.outputs) {
+    std::ofstream os = open(out);
+    switch(output_format(out)) {
+    case Format::MEDIT: LM::write_medit(os, mesh); break;
+    case Format::GMSH: LM::write_gmsh(os, mesh); break;
+    case Format::VTU: {
+      // the quality in the isotropic space, per tetrahedron
+      const std::vector<LM::Tetrahedron_quality_3> tq = LM::compute_tetrahedra_quality(mesh, field);
+      std::map<std::string, std::vector<double> > cells;
+      for(const LM::Tetrahedron_quality_3& t : tq) {
+        cells["theta_min"].push_back(t.theta_min);
+        cells["rho"].push_back(t.rho);
+        cells["kappa"].push_back(t.kappa);
+      }
+      LM::write_vtu(os, mesh, cells);
+      break;
+    }
+    }
+  }
   if(!o.stats.empty()) { std::ofstream os = open(o.stats); LM::write_quality_json(os, q); }
   if(!validity.valid()) {
     std::cerr << "lattice-mesh: error: the output mesh is not valid:\n" << validity.message << "\n";
@@ -313,6 +349,11 @@ int main(int argc, char** argv)
 {
   try {
     const Options o = parse(argc, argv);
+    // every output can be written, before the work
+    std::vector<std::string> files = o.outputs;
+    for(const std::string& f : { o.stats, o.write_field }) if(!f.empty()) files.push_back(f);
+    for(const std::string& f : files)
+      if(!std::ofstream(f, std::ios::app)) throw std::runtime_error("cannot write '" + f + "'");
     const Field_choice field = make_field(o);
     if(!o.input.empty()) {
       const Surface_domain domain = LM::read_polyhedral_lattice_domain_3<K>(o.input, o.feature_angle);

@@ -366,7 +366,11 @@ TEST(Lattice_mesh_program, WritesOutputsAndRejectsBadInput)
   const std::string exe = LATTICE_MESH_EXECUTABLE;
   const std::string out = dir + "/lm_cube.mesh", json = dir + "/lm_cube.json", vtu = dir + "/lm_cube.vtu";
   ASSERT_EQ(std::system((exe + " --domain cube --edge-length 0.25 --quiet -o " + out + " --stats " + json +
-                         " --vtu " + vtu + " > " + dir + "/lm_log.txt").c_str()), 0);
+                         " -o " + vtu + " > " + dir + "/lm_log.txt").c_str()), 0);
+  std::ifstream vs(vtu);
+  const std::string vtu_text((std::istreambuf_iterator<char>(vs)), std::istreambuf_iterator<char>());
+  for(const char* array : { "\"theta_min\"", "\"rho\"", "\"kappa\"", "\"particle_kind\"" })
+    EXPECT_NE(vtu_text.find(array), std::string::npos) << array;
   std::ifstream js(json);
   const std::string text((std::istreambuf_iterator<char>(js)), std::istreambuf_iterator<char>());
   for(const char* key : { "\"vertices\"", "\"tets\"", "\"theta_min\"", "\"below40\"", "\"hausdorff\"", "\"seconds\"" })
@@ -398,6 +402,11 @@ TEST(Lattice_mesh_program, WritesOutputsAndRejectsBadInput)
   EXPECT_NE(err.find("cannot open"), std::string::npos) << err;
   err = error_of("--domain cube --edge-length -1");
   EXPECT_NE(err.find("edge-length"), std::string::npos) << err;
+  // outputs are checked before the work: an unknown format, a path that cannot be written
+  err = error_of("--domain cube --edge-length 0.25 -o " + dir + "/lm_cube.stl");
+  EXPECT_NE(err.find("unknown format '.stl'"), std::string::npos) << err;
+  err = error_of("--domain cube --edge-length 0.25 -o /nonexistent/dir/lm.vtu");
+  EXPECT_NE(err.find("cannot write '/nonexistent/dir/lm.vtu'"), std::string::npos) << err;
   // counts and seeds are whole numbers in range: 1.5 threads or seed -5 is refused, not rounded or wrapped
   for(const char* bad : { "--threads 1.5", "--threads 0", "--seed -5", "--max-rounds -2", "--smoothing-rounds -1" }) {
     err = error_of(std::string("--domain cube --edge-length 0.25 ") + bad);

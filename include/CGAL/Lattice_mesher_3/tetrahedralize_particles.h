@@ -186,8 +186,8 @@ Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& p
       for(int i = 0; i < 4; ++i) touches = touches || is_boundary_facet(c, i);
       if(touches) touching.push_back(c);
     }
-    for(Cell_handle c : (touching.empty() ? std::vector<Cell_handle>(to_remove.begin(), to_remove.end()) : touching))
-      c->info() = 0;
+    if(touching.empty()) touching.assign(to_remove.begin(), to_remove.end());
+    for(Cell_handle c : touching) c->info() = 0;
     ++pass;
   }
 

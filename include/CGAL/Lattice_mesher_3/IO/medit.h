@@ -32,7 +32,7 @@ namespace Lattice_mesher_3 {
 \ingroup PkgLatticeMesher3IO
 Writes `mesh` in the ASCII Medit format (`.mesh`, as `CGAL::IO::write_MEDIT`): the vertices,
 the boundary faces as `Triangles` and the tetrahedra, with 1-based indices and full double
-precision. The reference of a vertex is its particle kind + 1 (0 when `mesh.vertex_kinds` is
+precision (`MeshVersionFormatted 2`, which tells readers the coordinates are doubles). The reference of a vertex is its particle kind + 1 (0 when `mesh.vertex_kinds` is
 empty), so that `read_medit()` restores the kinds; triangles and tetrahedra have reference 1.
 
 \throws std::runtime_error if the stream fails
@@ -42,7 +42,7 @@ void write_medit(std::ostream& os, const Tetrahedral_mesh_3<Point_3>& mesh)
 {
   const std::streamsize precision = os.precision();
   os << std::setprecision(17);
-  os << "MeshVersionFormatted 1\nDimension 3\n";
+  os << "MeshVersionFormatted 2\nDimension 3\n";
   os << "Vertices\n" << mesh.points.size() << '\n';
   for(std::size_t i = 0; i < mesh.points.size(); ++i) {
     const int ref = mesh.vertex_kinds.empty() ? 0 : int(mesh.vertex_kinds[i]) + 1;
