@@ -107,6 +107,7 @@ struct Options
   std::string input, domain, lattice = "bcc", field = "identity", field_data, write_field, stats, size_field;
   std::vector<std::string> outputs;
   double edge_length = 0., vertices = 0., feature_angle = 60., field_spacing = 0.;
+  bool has_edge_length = false, has_vertices = false;
   double cells_across = LM::internal::Shape_sizing_parameters().cells_across;
   double surface_tolerance = LM::internal::Shape_sizing_parameters().surface_tolerance;
   double grading = LM::internal::Shape_sizing_parameters().grading, min_edge_length = 0.;
@@ -147,8 +148,8 @@ static Options parse(int argc, char** argv)
     if(a == "-h" || a == "--help") { std::cout << usage; std::exit(0); }
     else if(a == "--domain") o.domain = args.value(a);
     else if(a == "--lattice") o.lattice = args.value(a);
-    else if(a == "--edge-length") o.edge_length = args.number(a);
-    else if(a == "--vertices") o.vertices = args.number(a);
+    else if(a == "--edge-length") { o.edge_length = args.number(a); o.has_edge_length = true; }
+    else if(a == "--vertices") { o.vertices = args.number(a); o.has_vertices = true; }
     else if(a == "--field") o.field = args.value(a);
     else if(a == "--field-data") o.field_data = args.value(a);
     else if(a == "--write-field") o.write_field = args.value(a);
@@ -180,12 +181,12 @@ static Options parse(int argc, char** argv)
   }
   if(o.outputs.empty()) throw std::invalid_argument("an output file is required: -o OUT.mesh (or .vtu, .msh)");
   for(const std::string& out : o.outputs) output_format(out);   // an unknown extension fails before any work
-  if((o.edge_length != 0.) == (o.vertices != 0.))
+  if(o.has_edge_length == o.has_vertices)
     throw std::invalid_argument("give exactly one of --edge-length L and --vertices N");
-  if(o.edge_length != 0. && !(o.edge_length > 0.))
+  if(o.has_edge_length && !(o.edge_length > 0.))
     throw std::invalid_argument("--edge-length must be positive, got " + std::to_string(o.edge_length));
-  if(o.vertices != 0. && !(o.vertices >= 4.))
-    throw std::invalid_argument("--vertices must be at least 4");
+  if(o.has_vertices && !(o.vertices >= 4.))
+    throw std::invalid_argument("--vertices must be at least 4, got " + std::to_string(o.vertices));
   LM::lattice_type_from_name(o.lattice);   // validates the name
   shape_sizing(o).check([](const char* parameter) {   // cells_across -> --cells-across
     std::string option = std::string("--") + parameter;
@@ -214,7 +215,9 @@ static Field_choice make_field(const Options& o)
   if(name == "fig8") return analytic(LM::Planar_layer_frame_field_3<Traits>());
   if(name == "fig9") return analytic(LM::Cylindrical_layer_frame_field_3<Traits>());
   if(!std::filesystem::exists(name))
-    throw std::invalid_argument("unknown field '" + name + "' (expected identity, rotation-y, fig8, fig9 or a field file)");
+    throw std::invalid_argument("--field " + name + ": " + (name.find_first_of("/.") != std::string::npos
+      ? std::string("the field file does not exist") : std::string("unknown field"))
+      + " (expected identity, rotation-y, fig8, fig9 or a field file)");
   const bool medit = std::filesystem::path(name).extension() == ".mesh";
   if(!medit && !o.field_data.empty())
     throw std::invalid_argument("--field-data goes with a Medit field mesh (--field X.mesh), not with '" + name + "'");

@@ -402,6 +402,13 @@ TEST(Lattice_mesh_program, WritesOutputsAndRejectsBadInput)
   EXPECT_NE(err.find("cannot open"), std::string::npos) << err;
   err = error_of("--domain cube --edge-length -1");
   EXPECT_NE(err.find("edge-length"), std::string::npos) << err;
+  // messages name the option as the user gave it
+  err = error_of("--domain cube --vertices 0");
+  EXPECT_NE(err.find("--vertices must be at least 4, got 0"), std::string::npos) << err;
+  err = error_of("--domain cube --vertices 100 --field /nonexistent/field.txt");
+  EXPECT_NE(err.find("--field /nonexistent/field.txt: the field file does not exist"), std::string::npos) << err;
+  err = error_of("--domain cube --vertices 100 --field spiral");
+  EXPECT_NE(err.find("--field spiral: unknown field"), std::string::npos) << err;
   // outputs are checked before the work: an unknown format, a path that cannot be written
   err = error_of("--domain cube --edge-length 0.25 -o " + dir + "/lm_cube.stl");
   EXPECT_NE(err.find("unknown format '.stl'"), std::string::npos) << err;
