@@ -41,6 +41,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace LM = CGAL::Lattice_mesher_3;
 typedef CGAL::Epick K;
 typedef K::Point_3 Point_3;
@@ -56,7 +58,8 @@ static const char* usage =
   "                    [--edge-length L | --vertices N]\n"
   "                    [--field identity|rotation-y|fig8|fig9|FILE [--field-data FILE]]\n"
   "                    [--feature-angle DEG] [--seed S] [--threads N] [--coarse-levels K]\n"
-  "                    [--max-rounds R] [--no-flips] [--smoothing-rounds N] [--quiet]\n"
+  "                    [--max-rounds R] [--no-flips] [--smoothing-rounds N] [--time-limit S]\n"
+  "                    [--quiet | --verbose]\n"
   "                    [--size-field FILE] [--cells-across C] [--surface-tolerance E]\n"
   "                    [--grading G] [--min-edge-length H]\n"
   "                    -o OUT.mesh|OUT.vtu|OUT.msh [-o ...] [--stats OUT.json]\n"
@@ -100,7 +103,12 @@ static const char* usage =
   "                   0 keeps the particles as they are)\n"
   "  -o               the mesh, in the format of the extension: .mesh (Medit), .vtu (VTK, with\n"
   "                   theta_min, rho and kappa per tetrahedron), .msh (Gmsh 4.1); several allowed\n"
-  "  --stats          the quality figures as JSON\n";
+  "  --stats          the quality figures as JSON\n"
+  "  --time-limit     stop the particle optimization after the round that ends past S seconds\n"
+  "                   (from the start of the meshing) and mesh the particles as they are\n"
+  "  --quiet          print only warnings and errors\n"
+  "  --verbose        print every optimization round and every stage of the mesh improvement\n"
+  "                   with its time (default: a progress bar on a terminal, the rounds otherwise)\n";
 
 struct Options
 {
@@ -113,7 +121,8 @@ struct Options
   double grading = LM::internal::Shape_sizing_parameters().grading, min_edge_length = 0.;
   unsigned int seed = 0;
   int threads = 1, coarse_levels = -1, max_rounds = -1;
-  bool quiet = false, flip = true;
+  bool quiet = false, verbose = false, flip = true;
+  double time_limit = 0.;
   int smoothing_rounds = 2;
 };
 
@@ -162,6 +171,8 @@ static Options parse(int argc, char** argv)
     else if(a == "-o" || a == "--output") o.outputs.push_back(args.value(a));
     else if(a == "--stats") o.stats = args.value(a);
     else if(a == "--quiet") o.quiet = true;
+    else if(a == "--verbose") o.verbose = true;
+    else if(a == "--time-limit") o.time_limit = args.number(a);
     else if(a == "--no-flips") o.flip = false;
     else if(a == "--size-field") o.size_field = args.value(a);
     else if(a == "--cells-across") o.cells_across = args.number(a);
@@ -171,6 +182,9 @@ static Options parse(int argc, char** argv)
     else if(a == "--smoothing-rounds") o.smoothing_rounds = int(args.integer(a, 0, std::numeric_limits<int>::max()));
     else command_line::Arguments::positional(a, o.input);
   }
+  if(o.quiet && o.verbose) throw std::invalid_argument("--quiet and --verbose exclude each other");
+  if(!(o.time_limit >= 0.) || !std::isfinite(o.time_limit))
+    throw std::invalid_argument("--time-limit must be a positive number of seconds, got " + std::to_string(o.time_limit));
   if(o.input.empty() == o.domain.empty())
     throw std::invalid_argument("give either an input surface file or --domain cube|cube11|sphere|torus");
   if(o.write_field.empty() != (o.field_spacing == 0.))
@@ -230,22 +244,55 @@ static Field_choice make_field(const Options& o)
   return { Field([samples](const Point_3& p) { return samples->frame(p); }), samples };
 }
 
-struct Progress
+// What the program shows while it meshes: nothing (--quiet), a bar rewritten in place on a
+// terminal, or a line per round (and per improvement stage with --verbose). Asks the mesher to
+// stop the optimization once the time limit has passed.
+class Progress
 {
-  bool quiet;
-  void round_done(const LM::Round_report& r) const
+public:
+  Progress(const Options& o, int levels)
+    : bar_(!o.quiet && !o.verbose && isatty(fileno(stdout))), lines_(!o.quiet && !bar_), verbose_(o.verbose),
+      levels_(levels), time_limit_(o.time_limit) {}
+
+  bool round_done(const LM::Round_report& r)
   {
-    if(quiet) return;
-    std::printf("  %-7s level %d round %2d: %8zu particles, energy %12.4f, -%zu +%zu, %3d iterations, %7.2f s\n",
-                r.final_round ? "[final]" : "", r.level, r.round, r.particles, r.energy, r.deleted, r.inserted,
-                r.iterations, r.seconds);
+    if(lines_)
+      std::printf("  %-7s level %d round %2d: %8zu particles, energy %12.4f, -%zu +%zu, %3d iterations, %7.2f s\n",
+                  r.final_round ? "[final]" : "", r.level, r.round, r.particles, r.energy, r.deleted, r.inserted,
+                  r.iterations, r.seconds);
+    if(bar_) {
+      // the levels count alike; within one, a round is an eighth of what is left of it
+      const double level_done = r.final_round ? 1. : 1. - std::pow(7. / 8., r.round + 1);
+      const double done = r.final_round ? 1. : (double(levels_ - r.level) + level_done) / double(levels_ + 1);
+      const int width = 30, filled = int(done * width + .5);
+      std::printf("\r  [%s%s] %3.0f%%  level %d round %2d  %zu particles  %.1f s ", std::string(std::size_t(filled), '#').c_str(),
+                  std::string(std::size_t(width - filled), '.').c_str(), 100. * done, r.level, r.round, r.particles, r.seconds);
+      if(r.final_round) std::printf("\n");
+    }
     std::fflush(stdout);
+    if(time_limit_ > 0. && r.seconds > time_limit_ && !r.final_round) {
+      if(bar_) std::printf("\n");
+      std::fprintf(stderr, "lattice-mesh: warning: --time-limit %g s reached at level %d round %d (%.2f s): the mesh is made of "
+                   "the particles as they are\n", time_limit_, r.level, r.round, r.seconds);
+      return false;
+    }
+    return true;
   }
+
+  void stage_done(const char* stage, double seconds) const
+  {
+    if(verbose_) std::printf("  [mesh] %-18s done at %7.2f s\n", stage, seconds);
+  }
+
+private:
+  bool bar_, lines_, verbose_;
+  int levels_;
+  double time_limit_;
 };
 
 // The field scaled by the size that follows the shape, and p's edge length (the largest edge).
 template <typename Domain>
-static Field shape_sized_field(const Domain& domain, const Field& field, LM::Lattice_mesher_parameters& p, const Options& o)
+static Field shape_sized_field(const Domain& domain, const Field& field, LM::internal::Lattice_mesher_parameters& p, const Options& o)
 {
   const auto start = std::chrono::steady_clock::now();
   const LM::internal::Shape_sizing_parameters s = shape_sizing(o);
@@ -280,8 +327,8 @@ static int run(const Domain& domain, const Field_choice& choice, const Options& 
     if(!o.quiet) std::printf("lattice-mesh: wrote the field '%s' to '%s'\n", o.field.c_str(), o.write_field.c_str());
     return 0;
   }
-  LM::Lattice_mesher_parameters p;
-  p.lattice = LM::lattice_type_from_name(o.lattice);
+  LM::internal::Lattice_mesher_parameters p;
+  p.lattice = LM::make_lattice(LM::lattice_type_from_name(o.lattice));
   p.seed = o.seed;
   p.threads = o.threads;
   p.coarse_levels = o.coarse_levels;
@@ -297,14 +344,14 @@ static int run(const Domain& domain, const Field_choice& choice, const Options& 
                 o.lattice.c_str(), mesher.edge_length(), mesher.expected_vertices(mesher.edge_length()), mesher.coarse_levels(), o.threads);
 
   const auto t0 = std::chrono::steady_clock::now();
-  Progress progress{o.quiet};
+  Progress progress(o, mesher.coarse_levels());
   mesher.optimize(progress);
   const auto t1 = std::chrono::steady_clock::now();
-  const LM::Tetrahedral_mesh_3<Point_3> mesh = mesher.tetrahedralize();
+  const LM::Tetrahedral_mesh_3<Point_3> mesh = mesher.tetrahedralize(progress);
   const auto t2 = std::chrono::steady_clock::now();
 
   const LM::Mesh_validity_report validity = LM::check_tetrahedral_mesh(mesh);
-  LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, mesher.lattice());
+  LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, CGAL::parameters::lattice(mesher.lattice()));
   // the local size: the longest edge of the lattice cube there, which the sizing shrinks
   const LM::Boundary_distances_3 distances = LM::boundary_distances(mesh, domain, 0.25 * mesher.edge_length(),
       [&](const Point_3& x) { return mesher.edge_length() * field.frame(x).colwise().norm().maxCoeff(); });
@@ -314,7 +361,7 @@ static int run(const Domain& domain, const Field_choice& choice, const Options& 
   q.seconds.optimize = std::chrono::duration<double>(t1 - t0).count();
   q.seconds.mesh = std::chrono::duration<double>(t2 - t1).count();
   q.seconds.total = q.seconds.optimize + q.seconds.mesh;
-  LM::print_quality_table(std::cout, q);
+  if(!o.quiet) LM::print_quality_table(std::cout, q);
 
   auto open = [](const std::string& name) {
     std::ofstream os(name);

@@ -424,7 +424,7 @@ static void report(const Method& m, const Input& in, const Run& run, const std::
   // (Particle2013's hole-less kernel keeps BCC's)
   const LM::Lattice_3 lattice = LM::make_lattice(m.lattice);
   const LM::Mesh_validity_report validity = LM::check_tetrahedral_mesh(run.mesh);
-  LM::Mesh_quality_3 q = LM::compute_mesh_quality(run.mesh, field, lattice);
+  LM::Mesh_quality_3 q = LM::compute_mesh_quality(run.mesh, field, CGAL::parameters::lattice(lattice));
   q.seconds.total = run.seconds;
 
   std::cout << "lattice-benchmark: " << m.name << " on " << in.name << ": " << run.mesh.points.size()
@@ -437,7 +437,7 @@ static void report(const Method& m, const Input& in, const Run& run, const std::
 
   write_file(o.out, [&](std::ostream& os) { LM::write_medit(os, run.mesh); });
   write_file(o.stats, [&](std::ostream& os) { write_json(os, q, m, in, run, validity.valid(), tried, o); });
-  write_file(o.histograms, [&](std::ostream& os) { LM::write_quality_histograms_csv(os, run.mesh, field, lattice); });
+  write_file(o.histograms, [&](std::ostream& os) { LM::write_quality_histograms_csv(os, run.mesh, field, CGAL::parameters::lattice(lattice)); });
 }
 
 // One attempt, in a child process: meshes at `size`; if the count is within the tolerance or the

@@ -85,7 +85,7 @@ int main(int argc, char* argv[])
     std::cout << validity.message << "\n";
 
     // Quality in the isotropic space of the field (here, the physical space).
-    LM::Mesh_quality_3 quality = LM::compute_mesh_quality(mesh, field, LM::bcc_lattice());
+    LM::Mesh_quality_3 quality = LM::compute_mesh_quality(mesh, field, CGAL::parameters::lattice(LM::bcc_lattice()));
     quality.seconds.optimize = progress.seconds;
     quality.seconds.mesh = total - progress.seconds;
     quality.seconds.total = total;

@@ -53,7 +53,6 @@ int main()
     const Field field;                                  // T = I: axis-aligned lattice cubes
     const LM::Lattice_3 lattice = LM::bcc_lattice();    // its one-ring is the kernel's hole set
 
-    LM::Optimization_options options;                   // the paper's values by default
     const double edge_length = 1. / 8.;                 // l*: 8 lattice cubes along a side
     const int coarse_levels = 2;                        // start at 4 l*, then 2 l*, then l*
 
@@ -74,31 +73,29 @@ int main()
 
     // 2. Levels 4 l*, 2 l*, l*. At each level, rounds: L-BFGS on the Gaussian Hole Kernel
     //    energy (each round ends by snapping particles to the boundary and the sharp edges),
-    //    then deletion and insertion, until neither changes anything.
+    //    then deletion and insertion, until neither changes anything. Every other setting is
+    //    the paper's default.
     for(int level = coarse_levels; level >= 0; --level) {
-      options.edge_length = std::ldexp(edge_length, level);
+      const auto np = CGAL::parameters::edge_length(std::ldexp(edge_length, level)).lattice(LM::Lattice_type::BCC);
       // Refinement: every particle adds its lattice one-ring at the finer edge length.
       if(level < coarse_levels)
-        LM::refine_particles(particles, domain, field, lattice, options);
+        LM::refine_particles(particles, domain, field, np);
 
-      options.max_iterations = 13;
-      LM::optimize_particles_round(particles, domain, field, lattice, options);
+      LM::optimize_particles(particles, domain, field, np.number_of_iterations(13));
       for(int round = 1; round <= 8; ++round) {
-        const std::size_t deleted = LM::delete_particles(particles, domain, field, lattice, options);
-        const std::size_t inserted = LM::insert_particles(particles, domain, field, lattice, options);
+        const std::size_t deleted = LM::delete_particles(particles, domain, field, np);
+        const std::size_t inserted = LM::insert_particles(particles, domain, field, np);
         std::printf("level %d round %d: -%zu +%zu -> %zu particles\n", level, round, deleted, inserted,
                     particles.size());
         if(deleted + inserted == 0) break;
-        options.max_iterations = round < 5 ? 13 : 8;
-        LM::optimize_particles_round(particles, domain, field, lattice, options);
+        LM::optimize_particles(particles, domain, field, np.number_of_iterations(round < 5 ? 13 : 8));
       }
     }
 
     // 3. The closing round: no iteration limit, a tighter gradient tolerance.
-    options.max_iterations = 0;
-    options.gradient_tolerance = 3e-3;
+    const auto np = CGAL::parameters::edge_length(edge_length).lattice(LM::Lattice_type::BCC);
     const LM::Optimization_result last =
-      LM::optimize_particles_round(particles, domain, field, lattice, options);
+      LM::optimize_particles(particles, domain, field, np.number_of_iterations(0).gradient_tolerance(3e-3));
     std::printf("closing round: %d iterations, energy %.4f\n", last.iterations, last.energy);
     const auto optimized = std::chrono::steady_clock::now();
 
@@ -111,19 +108,20 @@ int main()
                 kinds[0], kinds[1], kinds[2], kinds[3]);
 
     // 4. Tetrahedralization: the Delaunay tetrahedralization restricted to the domain.
-    LM::Tetrahedral_mesh_3<Point_3> mesh = LM::tetrahedralize_particles(particles, domain, field);
+    LM::Tetrahedral_mesh_3<Point_3> mesh = LM::tetrahedralize_particles(particles, domain, field, np);
 
     // 5. Improvement of the worst tetrahedra in the isotropic space: flips, vertex moves, then
     // the removal of extra vertices where moves could not help.
-    const LM::Flip_result flips = LM::flip_tetrahedra(mesh, field);
-    const std::size_t moves = LM::smooth_vertices(mesh, domain, field);
+    //    With l* and the lattice, flips and moves leave the lattice tetrahedra as they are.
+    const LM::Flip_result flips = LM::flip_tetrahedra(mesh, field, np);
+    const std::size_t moves = LM::smooth_vertices(mesh, domain, field, np);
     const std::size_t removed = LM::collapse_edges(mesh, field);
     std::printf("%zu flips, %zu vertex moves, %zu vertices removed\n", flips.total(), moves, removed);
     const auto meshed = std::chrono::steady_clock::now();
 
     const LM::Mesh_validity_report validity = LM::check_tetrahedral_mesh(mesh);
     std::cout << validity.message << "\n";
-    LM::Mesh_quality_3 quality = LM::compute_mesh_quality(mesh, field, lattice);
+    LM::Mesh_quality_3 quality = LM::compute_mesh_quality(mesh, field, np);
     quality.seconds.optimize = std::chrono::duration<double>(optimized - start).count();
     quality.seconds.mesh = std::chrono::duration<double>(meshed - optimized).count();
     quality.seconds.total = quality.seconds.optimize + quality.seconds.mesh;

@@ -49,7 +49,7 @@ int main()
 
     // Each tetrahedron is mapped by B = T^-1 at its centroid, each edge by B at its midpoint,
     // and the edge directions are compared with the FCC one-ring.
-    LM::Mesh_quality_3 quality = LM::compute_mesh_quality(mesh, field, LM::fcc_lattice());
+    LM::Mesh_quality_3 quality = LM::compute_mesh_quality(mesh, field, CGAL::parameters::lattice(LM::fcc_lattice()));
     quality.hausdorff = LM::boundary_hausdorff_distance(mesh, domain, 0.05);
     quality.seconds.total = seconds;
     LM::print_quality_table(std::cout, quality);

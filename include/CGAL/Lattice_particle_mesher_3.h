@@ -32,6 +32,8 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 namespace CGAL {
 namespace Lattice_mesher_3 {
@@ -55,12 +57,38 @@ struct Null_lattice_mesher_visitor
   void round_done(const Round_report&) {}
 };
 
-/// Parameters of `Lattice_particle_mesher_3`, defaulting to the paper's values.
+namespace internal {
+
+// A visitor's round_done() returns void (go on) or bool (false: stop the optimization).
+template <typename Visitor>
+bool continue_after(Visitor& visitor, const Round_report& report)
+{
+  if constexpr(std::is_same<decltype(visitor.round_done(report)), bool>::value) return visitor.round_done(report);
+  else { visitor.round_done(report); return true; }
+}
+
+// stage_done(name, seconds) is optional.
+template <typename Visitor, typename = void> struct Has_stage_done : std::false_type {};
+template <typename Visitor>
+struct Has_stage_done<Visitor, std::void_t<decltype(std::declval<Visitor&>().stage_done("", 0.))> > : std::true_type {};
+
+template <typename Visitor>
+void report_stage(Visitor& visitor, const char* stage, double seconds)
+{
+  if constexpr(Has_stage_done<Visitor>::value) visitor.stage_done(stage, seconds);
+}
+
+} // namespace internal
+
+namespace internal {
+
+// The parameters of Lattice_particle_mesher_3, read once from the named parameters of
+// lattice_mesh_3() or of its constructor; the defaults are the paper's values.
 struct Lattice_mesher_parameters
 {
   double edge_length = 0.;             ///< l*, in the isotropic space of the field
   double number_of_vertices = 0.;      ///< instead of `edge_length`: l* for about this many vertices
-  Lattice_type lattice = Lattice_type::BCC;
+  Lattice_3 lattice = bcc_lattice();
   unsigned int seed = 0;               ///< random points of the start; same seed and threads, same mesh
   int threads = 1;
   int max_rounds = -1;                 ///< MaxRoundNum; -1: 16 without a coarse level, 8 with, 30 without holes
@@ -79,6 +107,35 @@ struct Lattice_mesher_parameters
   int smoothing_rounds = 2;
 };
 
+
+template <typename NamedParameters>
+Lattice_mesher_parameters mesher_parameters(const NamedParameters& np, const char* caller)
+{
+  using parameters::is_default_parameter;
+  Lattice_mesher_parameters p;
+  p.lattice = stage_lattice(np);
+  p.sigma_ratio = p.lattice.sigma_ratio;
+  read_parameter(np, internal_np::random_seed, p.seed);
+  read_parameter(np, internal_np::number_of_threads, p.threads);
+  read_parameter(np, internal_np::max_rounds, p.max_rounds);
+  read_parameter(np, internal_np::coarse_levels, p.coarse_levels);
+  read_parameter(np, internal_np::neighbor_radius_ratio, p.neighbor_radius);
+  read_parameter(np, internal_np::gradient_tolerance, p.gradient_tolerance);
+  read_parameter(np, internal_np::final_gradient_tolerance, p.final_gradient_tolerance);
+  read_parameter(np, internal_np::do_flip, p.flip);
+  read_parameter(np, internal_np::number_of_smoothing_rounds, p.smoothing_rounds);
+  const bool has_length = !is_default_parameter<NamedParameters, internal_np::edge_length_t>::value;
+  const bool has_count = !is_default_parameter<NamedParameters, internal_np::number_of_vertices_t>::value;
+  if(has_length == has_count)
+    throw std::invalid_argument(std::string(caller) + ": give exactly one of edge_length() and number_of_vertices()");
+  read_parameter(np, internal_np::edge_length, p.edge_length);
+  if(has_length && (!(p.edge_length > 0.) || !std::isfinite(p.edge_length)))
+    throw std::invalid_argument(std::string(caller) + ": edge_length() must be positive and finite");
+  read_parameter(np, internal_np::number_of_vertices, p.number_of_vertices);
+  return p;
+}
+
+} // namespace internal
 } // namespace Lattice_mesher_3
 
 /*!
@@ -87,7 +144,7 @@ struct Lattice_mesher_parameters
 The particle-based lattice mesher: optimizes particles carrying a Gaussian Hole Kernel until
 they form the chosen lattice aligned with the frame field (Alg. 1 and 2 of the paper, with
 coarse-to-fine), then connects them into a tetrahedral mesh. Each stage is also a free function
-(`optimize_particles_round()`, `delete_particles()`, `insert_particles()`,
+(`optimize_particles()`, `delete_particles()`, `insert_particles()`,
 `tetrahedralize_particles()`); this class chains them.
 
 \tparam Traits a model of `LatticeMesherTraits_3`, e.g. `Lattice_mesher_traits_3<Epick>`
@@ -101,13 +158,27 @@ public:
   typedef typename Traits::Point_3 Point_3;
   typedef Lattice_mesher_3::Particle_set_3<Point_3> Particle_set;
   typedef Lattice_mesher_3::Tetrahedral_mesh_3<Point_3> Mesh;
-  typedef Lattice_mesher_3::Lattice_mesher_parameters Parameters;
 
   static_assert(Lattice_mesher_3::internal::Is_frame_field_3<FrameField, Traits>::value,
                 "FrameField must be a model of FrameField_3: Matrix_3 frame(const Point_3&) const");
 
-  Lattice_particle_mesher_3(const MeshDomain& domain, const FrameField& field, const Parameters& p)
-    : domain_(domain), field_(field), p_(p), lattice_(Lattice_mesher_3::make_lattice(p.lattice))
+  /// Checks the parameters and, for `number_of_vertices`, solves for l*. The named parameters
+  /// are those of `lattice_mesh_3()` but for the sizing (`size_field`, `cells_across`,
+  /// `surface_tolerance`, `grading`, `min_edge_length`) and `visitor`, which `optimize()` takes,
+  /// plus `final_gradient_tolerance` (EpsG of the closing round, default 3e-3).
+  /// \throws std::invalid_argument naming the parameter that is missing or out of range
+  template <typename NamedParameters = parameters::Default_named_parameters,
+            typename = std::enable_if_t<!std::is_same<NamedParameters, Lattice_mesher_3::internal::Lattice_mesher_parameters>::value> >
+  Lattice_particle_mesher_3(const MeshDomain& domain, const FrameField& field,
+                            const NamedParameters& np = parameters::default_values())
+    : Lattice_particle_mesher_3(domain, field, Lattice_mesher_3::internal::mesher_parameters(np, "Lattice_particle_mesher_3"),
+                                parameters::choose_parameter<Traits>(parameters::get_parameter(np, internal_np::geom_traits)))
+  {}
+
+  // The parameters as lattice_mesh_3() read them.
+  Lattice_particle_mesher_3(const MeshDomain& domain, const FrameField& field,
+                            const Lattice_mesher_3::internal::Lattice_mesher_parameters& p, const Traits& gt = Traits())
+    : domain_(domain), field_(field), p_(p), traits_(gt), lattice_(p.lattice)
   {
     lattice_.sigma_ratio = p.sigma_ratio;
     if((p.edge_length != 0.) == (p.number_of_vertices != 0.))
@@ -153,40 +224,41 @@ public:
     const Schedule sc = schedule();
     const int levels = coarse_levels();
     const int max_rounds = p_.max_rounds >= 0 ? p_.max_rounds : levels > 0 ? sc.rounds_after_coarse : sc.rounds;
-    auto remove = [&](const Optimization_options& o) {
-      return sc.grow ? delete_particles(particles_, domain_, field_, lattice_, o) : std::size_t(0);
+    auto remove = [&](const Lattice_mesher_3::internal::Optimization_options& o) {
+      return sc.grow ? Lattice_mesher_3::internal::delete_particles(particles_, domain_, field_, lattice_, o) : std::size_t(0);
     };
-    auto insert = [&](const Optimization_options& o) {
-      return sc.grow ? insert_particles(particles_, domain_, field_, lattice_, o)
-                       + insert_feature_particles(particles_, domain_, field_, lattice_, o)
-                     : std::size_t(0);
+    auto insert = [&](const Lattice_mesher_3::internal::Optimization_options& o) {
+      if(!sc.grow) return std::size_t(0);
+      // the gaps along the curves first, then the one-ring candidates
+      const std::size_t on_curves = Lattice_mesher_3::internal::insert_feature_particles(particles_, domain_, field_, lattice_, o);
+      return on_curves + Lattice_mesher_3::internal::insert_particles(particles_, domain_, field_, lattice_, o);
     };
 
     for(int level = levels; level >= 0; --level) {
-      Optimization_options o = options(std::ldexp(p_.edge_length, level));
+      Lattice_mesher_3::internal::Optimization_options o = options(std::ldexp(p_.edge_length, level));
       if(level == levels) {
         if(sc.grow) initialize_particles(o.edge_length);
         else scatter_particles(o.edge_length);
       }
-      else refine_particles(particles_, domain_, field_, lattice_, o);
+      else Lattice_mesher_3::internal::refine_particles(particles_, domain_, field_, lattice_, o);
       auto report = [&](int round, const Optimization_result& r, std::size_t del, std::size_t ins, bool final_round) {
         Round_report rep;
         rep.level = level; rep.round = round; rep.final_round = final_round;
         rep.particles = particles_.size(); rep.deleted = del; rep.inserted = ins;
         rep.iterations = r.iterations; rep.energy = r.energy; rep.seconds = seconds();
-        visitor.round_done(rep);
+        return Lattice_mesher_3::internal::continue_after(visitor, rep);
       };
       o.max_iterations = sc.early_iterations;
-      Optimization_result r = optimize_particles_round(particles_, domain_, field_, lattice_, o);
-      report(0, r, 0, 0, false);
+      Optimization_result r = Lattice_mesher_3::internal::optimize_particles_round(particles_, domain_, field_, lattice_, o);
+      if(!report(0, r, 0, 0, false)) return;
       for(int round = 1; round <= max_rounds; ++round) {
         const std::size_t del = remove(o);
         const std::size_t ins = insert(o);
         if(sc.grow && del + ins == 0) break;
         o.max_iterations = round < 5 ? sc.early_iterations : sc.late_iterations;
         const double previous = r.energy;
-        r = optimize_particles_round(particles_, domain_, field_, lattice_, o);
-        report(round, r, del, ins, false);
+        r = Lattice_mesher_3::internal::optimize_particles_round(particles_, domain_, field_, lattice_, o);
+        if(!report(round, r, del, ins, false)) return;
         // Near a boundary that cuts the lattice obliquely, a few particles may be deleted and
         // re-inserted forever; once a round no longer lowers the energy, more rounds only churn.
         if(sc.grow && round >= 4 && r.energy > previous - 1e-4 * std::abs(previous)) break;
@@ -196,18 +268,18 @@ public:
     // deletion tests: particles squeezed in next to a corner would stay (FCC cube: 29 of them, 4
     // tetrahedra below 40 degrees). A last deletion, insertion into the holes it leaves, and
     // deletion of what still does not fit close the loop.
-    Optimization_options o = options(p_.edge_length);
+    Lattice_mesher_3::internal::Optimization_options o = options(p_.edge_length);
     std::size_t deleted = remove(o);
     const std::size_t inserted = insert(o);
     deleted += remove(o);
     o.max_iterations = sc.final_iterations;
     o.gradient_tolerance = p_.final_gradient_tolerance;
-    const Optimization_result r = optimize_particles_round(particles_, domain_, field_, lattice_, o);
+    const Optimization_result r = Lattice_mesher_3::internal::optimize_particles_round(particles_, domain_, field_, lattice_, o);
     Round_report rep;
     rep.final_round = true; rep.particles = particles_.size(); rep.deleted = deleted; rep.inserted = inserted;
     rep.iterations = r.iterations;
     rep.energy = r.energy; rep.seconds = seconds();
-    visitor.round_done(rep);
+    Lattice_mesher_3::internal::continue_after(visitor, rep);
   }
 
   void optimize() { Lattice_mesher_3::Null_lattice_mesher_visitor v; optimize(v); }
@@ -242,10 +314,10 @@ public:
       if(depth < 0.) cannot_place_particles();
       particles_.push_back(deep, Particle_kind::FREE);
     }
-    Optimization_options o = options(l);
+    Lattice_mesher_3::internal::Optimization_options o = options(l);
     o.max_iterations = 5;
     for(;;) {
-      grow_particles(particles_, domain_, field_, lattice_, o);
+      Lattice_mesher_3::internal::grow_particles(particles_, domain_, field_, lattice_, o);
       // the first random point that no particle covers seeds the next grain
       const std::vector<Lattice_mesher_3::internal::Vec3> x = Lattice_mesher_3::internal::to_vectors(particles_.points);
       const Lattice_mesher_3::internal::Particle_frames frames = Lattice_mesher_3::internal::compute_particle_frames<K>(x, field_, p_.threads);
@@ -289,67 +361,70 @@ public:
 
   /// Connects the current particles into a tetrahedral mesh, then improves its worst tetrahedra
   /// (`flip_tetrahedra()`, `smooth_vertices()`, `collapse_edges()`), as the parameters say, and
-  /// removes the slivers that lie flat on the boundary (`peel_boundary_slivers()`).
-  Mesh tetrahedralize() const
+  /// removes the slivers that lie flat on the boundary (`peel_boundary_slivers()`). The
+  /// visitor's `stage_done()`, if it has one, follows the stages.
+  template <typename Visitor>
+  Mesh tetrahedralize(Visitor& visitor) const
   {
-    Lattice_mesher_3::Tetrahedralization_options o;
+    Lattice_mesher_3::internal::Tetrahedralization_options o;
     o.threads = p_.threads;
     o.edge_length = p_.edge_length;
-#ifdef CGAL_LATTICE_MESHER_3_VERBOSE
     const auto start = std::chrono::steady_clock::now();
     auto stage = [&](const char* name) {
-      std::cerr << "  [mesh] " << name << " done at "
-                << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
+      Lattice_mesher_3::internal::report_stage(visitor, name, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     };
-#else
-    auto stage = [](const char*) {};
-#endif
-    Mesh mesh = Lattice_mesher_3::tetrahedralize_particles(particles_, domain_, field_, o);
+    Mesh mesh = Lattice_mesher_3::internal::tetrahedralize_particles(particles_, domain_, field_, o, traits_);
     stage("tetrahedralization");
     // the shape-matching flips need a lattice to match: not for the hole-less kernel
-    Lattice_mesher_3::Flip_options fo;
+    Lattice_mesher_3::internal::Flip_options fo;
     if(lattice_.has_holes()) { fo.lattice = lattice_; fo.edge_length = p_.edge_length; }
-    if(p_.flip) Lattice_mesher_3::flip_tetrahedra(mesh, field_, fo);
+    if(p_.flip) Lattice_mesher_3::internal::flip_tetrahedra(mesh, field_, fo);
     stage("flips");
     // smoothing moves vertices by a fraction of an edge: the connectivity already follows the
     // field, only the worst tetrahedra are flipped again
-    Lattice_mesher_3::Smoothing_options so;
+    Lattice_mesher_3::internal::Smoothing_options so;
     so.threads = p_.threads;
     // lattice tetrahedra stay as they are (the hole-less kernel has no lattice to keep)
     if(lattice_.has_holes()) { so.lattice = lattice_; so.edge_length = p_.edge_length; }
     // The extra vertices of lattice defects are removed once the first round has done what
     // moves could (before it, contractions take vertices the smoothing would have placed well).
-    auto smooth_and_flip = [&](const Lattice_mesher_3::Smoothing_options& options) {
-      const std::size_t moves = Lattice_mesher_3::smooth_vertices(mesh, domain_, field_, options);
+    auto smooth_and_flip = [&](const Lattice_mesher_3::internal::Smoothing_options& options) {
+      const std::size_t moves = Lattice_mesher_3::internal::smooth_vertices(mesh, domain_, field_, options);
       stage("smoothing");
-      if(moves > 0 && p_.flip) { Lattice_mesher_3::flip_tetrahedra(mesh, field_); stage("flips"); }
+      if(moves > 0 && p_.flip) { Lattice_mesher_3::internal::flip_tetrahedra(mesh, field_, Lattice_mesher_3::internal::Flip_options()); stage("flips"); }
       return moves;
     };
     for(int round = 0; round < p_.smoothing_rounds; ++round) {
-      if(round > 0) { Lattice_mesher_3::collapse_edges(mesh, field_); stage("contractions"); }
+      if(round > 0) { Lattice_mesher_3::internal::collapse_edges(mesh, field_, Lattice_mesher_3::internal::Collapse_options()); stage("contractions"); }
       if(smooth_and_flip(so) == 0) break;
     }
     if(p_.smoothing_rounds > 0) {
       // Last, the tetrahedra below the floor alone, their shortfall below 45 degrees weighing 50
       // times more: a little of the mean for the worst (torus, 2300 vertices: 47 -> 12 below 40
       // degrees, mean -0.03), then the contractions this made possible.
-      Lattice_mesher_3::Smoothing_options worst = so;
+      Lattice_mesher_3::internal::Smoothing_options worst = so;
       worst.select_angle = worst.floor_angle;
       worst.worst_angle = 45.;
       worst.worst_weight = 50.;
       smooth_and_flip(worst);
       // and the slivers of short boundary edges, which the surface holds
-      Lattice_mesher_3::Collapse_options co;
+      Lattice_mesher_3::internal::Collapse_options co;
       co.boundary_angle = 20.;
-      Lattice_mesher_3::collapse_edges(mesh, field_, co);
+      Lattice_mesher_3::internal::collapse_edges(mesh, field_, co);
       stage("contractions");
     }
     // what is left below 20 degrees on the boundary is mostly slivers whose four vertices the
     // surface holds: the flat ones go
-    Lattice_mesher_3::peel_boundary_slivers(mesh, field_);
+    Lattice_mesher_3::internal::peel_boundary_slivers(mesh, field_, Lattice_mesher_3::internal::Peeling_options());
     stage("peeling");
     return mesh;
   }
+
+  Mesh tetrahedralize() const { Lattice_mesher_3::Null_lattice_mesher_visitor v; return tetrahedralize(v); }
+
+  /// The traits object, as given by the named parameter `geom_traits`; its predicates decide the
+  /// Delaunay tetrahedralization.
+  const Traits& geom_traits() const { return traits_; }
 
   const Particle_set& particles() const { return particles_; }
   Particle_set& particles() { return particles_; }
@@ -488,9 +563,9 @@ private:
                                 "(is it empty, or the edge length larger than the domain?)");
   }
 
-  Lattice_mesher_3::Optimization_options options(double l) const
+  Lattice_mesher_3::internal::Optimization_options options(double l) const
   {
-    Lattice_mesher_3::Optimization_options o;
+    Lattice_mesher_3::internal::Optimization_options o;
     o.edge_length = l;
     o.neighbor_radius = p_.neighbor_radius;
     o.gradient_tolerance = p_.gradient_tolerance;
@@ -533,7 +608,8 @@ private:
 
   const MeshDomain& domain_;
   const FrameField& field_;
-  Parameters p_;
+  Lattice_mesher_3::internal::Lattice_mesher_parameters p_;
+  Traits traits_;
   Lattice_mesher_3::Lattice_3 lattice_;
   Particle_set particles_;
   mutable bool samples_computed_ = false;

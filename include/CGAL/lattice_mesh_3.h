@@ -38,11 +38,12 @@ template <class T> T& unwrap(std::reference_wrapper<T>& t) { return t.get(); }
 
 template <typename Traits, typename MeshDomain, typename FrameField, typename Visitor>
 Tetrahedral_mesh_3<typename Traits::Point_3>
-run_lattice_mesher(const MeshDomain& domain, const FrameField& field, const Lattice_mesher_parameters& p, Visitor& visitor)
+run_lattice_mesher(const MeshDomain& domain, const FrameField& field, const internal::Lattice_mesher_parameters& p,
+                   const Traits& gt, Visitor& visitor)
 {
-  Lattice_particle_mesher_3<Traits, MeshDomain, FrameField> mesher(domain, field, p);
+  Lattice_particle_mesher_3<Traits, MeshDomain, FrameField> mesher(domain, field, p, gt);
   mesher.optimize(visitor);
-  return mesher.tetrahedralize();
+  return mesher.tetrahedralize(visitor);
 }
 
 // No size of the user's.
@@ -103,7 +104,7 @@ struct Shape_sizing_report
 // across the thin parts (C down to 1.5), and only then does l* grow further.
 template <typename Traits, typename MeshDomain, typename FrameField, typename UserSize>
 Sized_frame_field_3<FrameField, Combined_size_3<typename MeshDomain::Geom_traits, UserSize> >
-sized_field(const MeshDomain& domain, const FrameField& field, const UserSize& user, Lattice_mesher_parameters& p,
+sized_field(const MeshDomain& domain, const FrameField& field, const UserSize& user, internal::Lattice_mesher_parameters& p,
             const Shape_sizing_parameters& s, Shape_sizing_report* report = nullptr)
 {
   typedef typename MeshDomain::Geom_traits K;
@@ -118,7 +119,7 @@ sized_field(const MeshDomain& domain, const FrameField& field, const UserSize& u
   // spare the fit's hundred counts their inside tests; not drawn without a count to fit. The
   // mesher also checks the parameters before the sizing's work.
   typedef Lattice_particle_mesher_3<Traits, MeshDomain, FrameField> Mesher;
-  Lattice_mesher_parameters q = p;
+  internal::Lattice_mesher_parameters q = p;
   q.number_of_vertices = n;
   const Mesher mesher(domain, field, q);
   const std::vector<typename K::Point_3> inside = n > 0. ? internal::inside_samples(domain, 4096) : std::vector<typename K::Point_3>();
@@ -340,7 +341,7 @@ them (`tetrahedralize_particles()`).
     \cgalParamDefault{`Lattice_mesher_3::Null_lattice_mesher_visitor`}
   \cgalParamNEnd
   \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{the traits}
+    \cgalParamDescription{the traits object; its predicates decide the Delaunay tetrahedralization}
     \cgalParamType{a model of `LatticeMesherTraits_3`}
     \cgalParamDefault{`Lattice_mesher_traits_3<MeshDomain::Geom_traits>`}
   \cgalParamNEnd
@@ -373,27 +374,7 @@ lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
     internal_np::geom_traits_t, NamedParameters,
     Lattice_mesher_traits_3<typename MeshDomain::Geom_traits> >::type Traits;
 
-  LM::Lattice_mesher_parameters p;
-  p.lattice = choose_parameter(get_parameter(np, internal_np::lattice_param), LM::Lattice_type::BCC);
-  p.seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
-  p.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 1);
-  p.max_rounds = choose_parameter(get_parameter(np, internal_np::max_rounds), -1);
-  p.coarse_levels = choose_parameter(get_parameter(np, internal_np::coarse_levels), -1);
-  p.sigma_ratio = choose_parameter(get_parameter(np, internal_np::sigma_ratio), 0.3);
-  p.neighbor_radius = choose_parameter(get_parameter(np, internal_np::neighbor_radius_ratio), 1.3);
-  p.gradient_tolerance = choose_parameter(get_parameter(np, internal_np::gradient_tolerance), 1e-2);
-  p.flip = choose_parameter(get_parameter(np, internal_np::do_flip), true);
-  p.smoothing_rounds = choose_parameter(get_parameter(np, internal_np::number_of_smoothing_rounds), 2);
-
-  const bool has_length = !is_default_parameter<NamedParameters, internal_np::edge_length_t>::value;
-  const bool has_count = !is_default_parameter<NamedParameters, internal_np::number_of_vertices_t>::value;
-  if(has_length == has_count)
-    throw std::invalid_argument("lattice_mesh_3(): give exactly one of edge_length() and number_of_vertices()");
-  p.edge_length = choose_parameter(get_parameter(np, internal_np::edge_length), 0.);
-  if(has_length && (!(p.edge_length > 0.) || !std::isfinite(p.edge_length)))
-    throw std::invalid_argument("lattice_mesh_3(): edge_length() must be positive and finite");
-  // the mesher solves for l* from the count
-  p.number_of_vertices = choose_parameter(get_parameter(np, internal_np::number_of_vertices), 0.);
+  LM::internal::Lattice_mesher_parameters p = LM::internal::mesher_parameters(np, "lattice_mesh_3()");
 
   typedef typename internal_np::Lookup_named_param_def<
     internal_np::visitor_t, NamedParameters, LM::Null_lattice_mesher_visitor>::type Visitor;
@@ -410,7 +391,8 @@ lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
   s.min_edge_length = choose_parameter(get_parameter(np, internal_np::min_edge_length), defaults.min_edge_length);
   s.check([](const char* parameter) { return "lattice_mesh_3(): " + std::string(parameter) + "()"; });
   const auto sized = LM::internal::sized_field<Traits>(domain, field, size, p, s);
-  return LM::internal::run_lattice_mesher<Traits>(domain, sized, p, LM::internal::unwrap(visitor));
+  return LM::internal::run_lattice_mesher(domain, sized, p, choose_parameter<Traits>(get_parameter(np, internal_np::geom_traits)),
+                                          LM::internal::unwrap(visitor));
   }
 }
 

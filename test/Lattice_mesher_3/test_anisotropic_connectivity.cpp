@@ -223,12 +223,12 @@ TEST(Tetrahedralize_particles, Fig8ConnectivityFollowsTheField)
   EXPECT_TRUE(v.valid()) << v.message;
   EXPECT_EQ(non_positive(mesh), 0u);
   EXPECT_EQ(mesh.points.size(), ps.size());
-  const LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, bcc);
+  const LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, CGAL::parameters::lattice(bcc));
 
   // the same particles, Euclidean Delaunay, measured in the same (fig8's isotropic) space
   const Mesh euclidean = LM::tetrahedralize_particles(ps, fig8_cube(), LM::Constant_frame_field_3<Traits>(), np);
   EXPECT_TRUE(LM::check_tetrahedral_mesh(euclidean).valid());
-  const LM::Mesh_quality_3 qe = LM::compute_mesh_quality(euclidean, field, bcc);
+  const LM::Mesh_quality_3 qe = LM::compute_mesh_quality(euclidean, field, CGAL::parameters::lattice(bcc));
 
   std::cout << "  fig8 BCC lattice, " << ps.size() << " particles: embedding: " << q.tets << " tets, theta_min mean "
             << q.theta_min.mean << " min " << q.theta_min.min << ", below 40: " << q.below40 << ", epsilon mean "
@@ -279,27 +279,25 @@ TEST(Flip_tetrahedra, ShapeFlipsNeverRaiseTheShapeEnergyNorInvert)
         Mesh mesh = jittered_mesh(seed, n);
         ASSERT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
         const std::set<std::array<int, 3> > boundary = sorted_faces(mesh);
-        LM::Flip_options o;
-        o.lattice = LM::make_lattice(type);
-        o.edge_length = l;
-        o.target_angle = 0.;   // no angle pass: only the shape flips (and inverted tets, of which there are none)
-        const double before = shape_energy(mesh, field, o.lattice, l), worst_before = worst_angle(mesh, field);
-        const LM::Flip_result r = LM::flip_tetrahedra(mesh, field, o);
-        const double after = shape_energy(mesh, field, o.lattice, l);
-        SCOPED_TRACE(testing::Message() << "seed " << seed << ", " << o.lattice.name << ", field "
+        const LM::Lattice_3 lattice = LM::make_lattice(type);
+        const double before = shape_energy(mesh, field, lattice, l), worst_before = worst_angle(mesh, field);
+        // no angle pass: only the shape flips (and inverted tets, of which there are none)
+        const LM::Flip_result r = LM::flip_tetrahedra(mesh, field, CGAL::parameters::lattice(type).edge_length(l).target_angle(0.));
+        const double after = shape_energy(mesh, field, lattice, l);
+        SCOPED_TRACE(testing::Message() << "seed " << seed << ", " << lattice.name << ", field "
                                         << (stretched ? "stretched" : "identity"));
         EXPECT_GT(r.total(), 0u);
         EXPECT_EQ(r.boundary_flips, 0u);
         EXPECT_LE(after, before);
         EXPECT_LT(after, before - 1e-6 * before);
         // a shape flip keeps the smallest angle of what it replaces above min(that angle, floor)
-        EXPECT_GE(worst_angle(mesh, field), (std::min)(worst_before, o.floor_angle) - 1e-9);
+        EXPECT_GE(worst_angle(mesh, field), (std::min)(worst_before, 40.) - 1e-9);
         EXPECT_EQ(non_positive(mesh), 0u);
         const LM::Mesh_validity_report v = LM::check_tetrahedral_mesh(mesh);
         EXPECT_TRUE(v.valid()) << v.message;
         EXPECT_EQ(sorted_faces(mesh), boundary);
         if(seed == 1u)
-          std::cout << "  seed 1, " << o.lattice.name << (stretched ? ", stretched" : ", identity") << ": " << r.total() << " flips, shape energy " << before << " -> " << after << "\n";
+          std::cout << "  seed 1, " << lattice.name << (stretched ? ", stretched" : ", identity") << ": " << r.total() << " flips, shape energy " << before << " -> " << after << "\n";
       }
 }
 
@@ -323,8 +321,7 @@ Mesh folded_pair(double by)
 TEST(Flip_tetrahedra, InvertedSliverOnFlatBoundaryIsFlippedAway)
 {
   const LM::Constant_frame_field_3<Traits> field;
-  LM::Flip_options o;
-  o.target_angle = 0.;   // only inverted tetrahedra
+  const auto o = CGAL::parameters::target_angle(0.);   // only inverted tetrahedra
 
   // the unfolded pair is valid, and nothing is flipped
   Mesh unfolded = folded_pair(-0.3);
@@ -367,12 +364,13 @@ TEST(Flip_tetrahedra, InvertedSliverOnFlatBoundaryIsFlippedAway)
 TEST(Flip_tetrahedra, CapOfThinTriangleOnFlatBoundaryIsFlippedAway)
 {
   const LM::Constant_frame_field_3<Traits> field;
-  const LM::Flip_options o;
+  const auto o = CGAL::parameters::default_values();
+  const double floor_angle = 40.;   // flip_tetrahedra()'s default
   enum { A, B, C, D, E };
   Mesh thin = folded_pair(-0.02);
   ASSERT_TRUE(LM::check_tetrahedral_mesh(thin).valid());
   const double before = worst_angle(thin, field);
-  ASSERT_LT(before, o.floor_angle);
+  ASSERT_LT(before, floor_angle);
   const LM::Flip_result r = LM::flip_tetrahedra(thin, field, o);
   EXPECT_EQ(r.boundary_flips, 1u);
   EXPECT_EQ(r.total(), 1u);
@@ -385,8 +383,7 @@ TEST(Flip_tetrahedra, CapOfThinTriangleOnFlatBoundaryIsFlippedAway)
   std::cout << "  cap of a thin boundary triangle: smallest angle " << before << " -> " << worst_angle(thin, field) << "\n";
 
   // disabled, or the two boundary faces not in one plane: nothing to flip
-  LM::Flip_options off = o;
-  off.boundary_flatness = 0.;
+  const auto off = CGAL::parameters::boundary_flatness(0.);
   Mesh kept = folded_pair(-0.02);
   EXPECT_EQ(LM::flip_tetrahedra(kept, field, off).total(), 0u);
   EXPECT_EQ(kept.tets, folded_pair(-0.02).tets);
@@ -408,7 +405,7 @@ LM::Mesh_quality_3 fig8_pipeline(LM::Lattice_type lattice)
                                                                .lattice(lattice).number_of_threads(2));
   const LM::Mesh_validity_report v = LM::check_tetrahedral_mesh(mesh);
   EXPECT_TRUE(v.valid()) << v.message;
-  const LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, LM::make_lattice(lattice));
+  const LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, CGAL::parameters::lattice(LM::make_lattice(lattice)));
   std::cout << "  fig8 " << LM::make_lattice(lattice).name << ": " << q.vertices << " vertices, " << q.tets
             << " tets, theta_min mean " << q.theta_min.mean << " min " << q.theta_min.min << ", below 40: "
             << q.below40 << ", epsilon mean " << q.epsilon.mean << "\n";

@@ -110,12 +110,11 @@ TEST(Smooth_vertices, LowersTheShortfallRaisesTheWorstAngleAndKeepsVerticesOnThe
   LM::Tetrahedral_mesh_3<Point_3> mesh = jittered_mesh(5);
   const LM::Tetrahedral_mesh_3<Point_3> original = mesh;
   const double before = worst_angle(mesh, field);
-  LM::Smoothing_options o;
-  o.threads = 2;
-  const double shortfall_before = shortfall(mesh, field, o.target_angle);
-  EXPECT_GT(LM::smooth_vertices(mesh, unit_cube(), field, o), 0u);
+  const double target = 70.;   // smooth_vertices()' default target_angle
+  const double shortfall_before = shortfall(mesh, field, target);
+  EXPECT_GT(LM::smooth_vertices(mesh, unit_cube(), field, CGAL::parameters::number_of_threads(2)), 0u);
   EXPECT_GT(worst_angle(mesh, field), before);
-  EXPECT_LT(shortfall(mesh, field, o.target_angle), 0.9 * shortfall_before);
+  EXPECT_LT(shortfall(mesh, field, target), 0.9 * shortfall_before);
   const LM::Mesh_validity_report v = LM::check_tetrahedral_mesh(mesh);
   EXPECT_TRUE(v.valid()) << v.message;
   // every kind but the corners is searched (boundary vertices in their tangent plane, sharp ones
@@ -137,8 +136,7 @@ TEST(Smooth_vertices, LowersTheShortfallRaisesTheWorstAngleAndKeepsVerticesOnThe
   }
   // the same result with one thread
   LM::Tetrahedral_mesh_3<Point_3> single = original;
-  o.threads = 1;
-  LM::smooth_vertices(single, unit_cube(), field, o);
+  LM::smooth_vertices(single, unit_cube(), field, CGAL::parameters::number_of_threads(1));
   EXPECT_EQ(single.points, mesh.points);
 }
 
@@ -166,14 +164,10 @@ TEST(Smooth_vertices, LeavesLatticeTetrahedraAlone)
   const LM::Tetrahedral_mesh_3<Point_3> lattice = LM::tetrahedralize_particles(ps, unit_cube(), field);
   ASSERT_TRUE(LM::check_tetrahedral_mesh(lattice).valid());
   EXPECT_NEAR(worst_angle(lattice, field), 45., 1e-6);
-  LM::Smoothing_options o;
-  o.lattice = LM::bcc_lattice();
-  o.edge_length = 1. / n;
   LM::Tetrahedral_mesh_3<Point_3> mesh = lattice;
-  EXPECT_EQ(LM::smooth_vertices(mesh, unit_cube(), field, o), 0u);
+  EXPECT_EQ(LM::smooth_vertices(mesh, unit_cube(), field, CGAL::parameters::edge_length(1. / n).lattice(LM::Lattice_type::BCC)), 0u);
   EXPECT_EQ(mesh.points, lattice.points);
-  o.edge_length = 0.;   // no lattice
-  EXPECT_GT(LM::smooth_vertices(mesh, unit_cube(), field, o), 0u);
+  EXPECT_GT(LM::smooth_vertices(mesh, unit_cube(), field), 0u);   // no lattice
 }
 
 // The boundary faces as triples of points (contractions renumber the vertices).
@@ -249,9 +243,7 @@ TEST(Collapse_edges, MergesAnExposedParticleIntoTheBoundaryWhenAsked)
   const Point_3 extra(.2625, 0., .255);
   LM::Tetrahedral_mesh_3<Point_3> mesh = bcc_cube_with_extra(extra, field);
   const double before = worst_angle(mesh, field);
-  LM::Collapse_options o;
-  o.boundary_angle = 20.;
-  EXPECT_GE(LM::collapse_edges(mesh, field, o), 1u);
+  EXPECT_GE(LM::collapse_edges(mesh, field, CGAL::parameters::boundary_angle(20.)), 1u);
   EXPECT_EQ(std::find(mesh.points.begin(), mesh.points.end(), extra), mesh.points.end());
   const LM::Mesh_validity_report v = LM::check_tetrahedral_mesh(mesh);
   ASSERT_TRUE(v.valid()) << v.message;

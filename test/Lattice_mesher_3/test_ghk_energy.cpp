@@ -169,7 +169,7 @@ struct Particle_system
   }
 };
 
-double default_radius() { return LM::Optimization_options().neighbor_radius; }
+double default_radius() { return LM::internal::Optimization_options().neighbor_radius; }
 
 // `n` random particles at about the lattice's density in the isotropic space of the field: a cube
 // of the isotropic space mapped by T. For Ry the box is off the y axis, where the frame turns by

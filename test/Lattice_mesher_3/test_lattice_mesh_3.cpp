@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <random>
 #include <string>
 
@@ -70,14 +71,11 @@ class Cube_lattice : public ::testing::TestWithParam<LM::Lattice_type> {};
 
 TEST_P(Cube_lattice, InteriorFormsThePerfectLatticeAndTheMeshIsValid)
 {
-  LM::Lattice_mesher_parameters p;
-  p.lattice = GetParam();
-  p.edge_length = 1. / 8.;
-  p.threads = 2;
   const Field field;
-  CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> mesher(cube(), field, p);
+  CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> mesher(
+      cube(), field, CGAL::parameters::lattice(GetParam()).edge_length(1. / 8.).number_of_threads(2));
   mesher.optimize();
-  EXPECT_GE(lattice_fraction(mesher.particles(), mesher.lattice(), p.edge_length), 0.95);
+  EXPECT_GE(lattice_fraction(mesher.particles(), mesher.lattice(), 1. / 8.), 0.95);
 
   const LM::Tetrahedral_mesh_3<Point_3> mesh = mesher.tetrahedralize();
   const LM::Mesh_validity_report r = LM::check_tetrahedral_mesh(mesh);
@@ -102,12 +100,9 @@ INSTANTIATE_TEST_SUITE_P(Lattices, Cube_lattice, ::testing::Values(LM::Lattice_t
 // (cube, 1,500 vertices: mean smallest dihedral angle 53.3, alignment error 21.4 degrees).
 TEST(Lattice_mesh_3, HolelessKernelKeepsItsCountAndFormsNoLattice)
 {
-  LM::Lattice_mesher_parameters p;
-  p.lattice = LM::Lattice_type::GAUSSIAN;
-  p.number_of_vertices = 1500;
-  p.threads = 2;
   const Field field;
-  CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> mesher(cube(), field, p);
+  CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> mesher(
+      cube(), field, CGAL::parameters::lattice(LM::Lattice_type::GAUSSIAN).number_of_vertices(1500).number_of_threads(2));
   EXPECT_EQ(mesher.coarse_levels(), 0);
   mesher.optimize();
   const LM::Particle_set_3<Point_3>& ps = mesher.particles();
@@ -129,7 +124,7 @@ TEST(Lattice_mesh_3, HolelessKernelKeepsItsCountAndFormsNoLattice)
   EXPECT_TRUE(r.valid()) << r.message;
   EXPECT_LE(mesh.points.size(), ps.size());
   EXPECT_GT(mesh.points.size(), 0.95 * ps.size());
-  const LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, mesher.lattice());
+  const LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, CGAL::parameters::lattice(mesher.lattice()));
   EXPECT_GT(q.theta_min.mean, 50.);
   EXPECT_GT(q.epsilon.mean, 15.);
 }
@@ -218,7 +213,7 @@ TEST(Lattice_mesh_3, SizeFollowsAThinPartByDefault)
     const LM::Mesh_validity_report r = LM::check_tetrahedral_mesh(*m);
     EXPECT_TRUE(r.valid()) << r.message;
   }
-  const LM::Mesh_quality_3 q = LM::compute_mesh_quality(sized, field, LM::make_lattice(LM::Lattice_type::BCC));
+  const LM::Mesh_quality_3 q = LM::compute_mesh_quality(sized, field, CGAL::parameters::lattice(LM::make_lattice(LM::Lattice_type::BCC)));
   std::cout << sized.points.size() << " vertices, " << middle(sized) << " in the middle layer, smallest angle "
             << q.theta_min.min << "; cells_across(0): " << uniform.points.size() << ", " << middle(uniform) << "\n";
   // the middle layer of a BCC lattice of edge 0.2 over 2 x 2: about (2 / 0.2)^2 = 100 vertices
@@ -250,7 +245,7 @@ TEST(Lattice_mesh_3, SurfaceToleranceBoundsTheDistanceToTheSurface)
             << fine.points.size() << " at the tolerance " << tolerance << "\n";
   EXPECT_GT(far, 2. * tolerance);
   EXPECT_LE(near, tolerance);
-  EXPECT_GE(LM::compute_mesh_quality(fine, field, LM::make_lattice(LM::Lattice_type::BCC)).theta_min.min, 10.);
+  EXPECT_GE(LM::compute_mesh_quality(fine, field, CGAL::parameters::lattice(LM::make_lattice(LM::Lattice_type::BCC))).theta_min.min, 10.);
   EXPECT_THROW(CGAL::lattice_mesh_3(ball, field, CGAL::parameters::edge_length(.5).surface_tolerance(-1.)), std::invalid_argument);
 }
 
@@ -275,9 +270,7 @@ TEST(Lattice_mesh_3, RefinementGivesTheLatticeOfHalfTheEdge)
     const Lattice_block coarse = lattice_block(lattice, 4, 1e-6);   // its interior points
     for(std::size_t i = 0; i < coarse.u.size(); ++i)
       if(coarse.central[i]) ps.push_back(point(coarse.u[i], 2. * l), LM::Particle_kind::FREE);
-    LM::Optimization_options o;
-    o.edge_length = l;
-    EXPECT_GT(LM::refine_particles(ps, cube(), field, lattice, o), 0u);
+    EXPECT_GT(LM::refine_particles(ps, cube(), field, CGAL::parameters::edge_length(l).lattice(lattice)), 0u);
     const Lattice_block fine = lattice_block(lattice, 8, 2.);   // central: 2l inside
     std::size_t expected = 0, found_once = 0, particles_deep = 0;
     for(std::size_t i = 0; i < fine.u.size(); ++i) {
@@ -300,9 +293,7 @@ TEST(Lattice_mesh_3, RefinementGivesTheLatticeOfHalfTheEdge)
 TEST(Lattice_mesh_3, StagesAsNamedParameterFunctions)
 {
   const Field field;
-  LM::Lattice_mesher_parameters p;
-  p.edge_length = 0.25;
-  CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> mesher(cube(), field, p);
+  CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> mesher(cube(), field, CGAL::parameters::edge_length(0.25));
   // the mesher's start: the corners, and the lattice grown from them
   mesher.initialize_particles(0.25);
   EXPECT_EQ(mesher.particles().kinds[0], LM::Particle_kind::FIXED);
@@ -317,7 +308,7 @@ TEST(Lattice_mesh_3, StagesAsNamedParameterFunctions)
   LM::Particle_set_3<Point_3> grown;
   grown.push_back(Point_3(0.5, 0.5, 0.5), LM::Particle_kind::FREE);
   EXPECT_GT(LM::grow_particles(grown, cube(), field, np), 50u);
-  const LM::Optimization_result r = LM::optimize_particles_round(ps, cube(), field, np.number_of_iterations(5));
+  const LM::Optimization_result r = LM::optimize_particles(ps, cube(), field, np.number_of_iterations(5));
   EXPECT_LE(r.iterations, 5);
   EXPECT_LT(r.energy, 0.);
   const std::size_t before = ps.size();
@@ -327,9 +318,130 @@ TEST(Lattice_mesh_3, StagesAsNamedParameterFunctions)
   EXPECT_GT(deleted + inserted, 0u);
   const auto mesh = LM::tetrahedralize_particles(ps, cube(), field, np);
   EXPECT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
-  expect_error([&] { LM::optimize_particles_round(ps, cube(), field, CGAL::parameters::number_of_threads(2)); }, { "edge_length" });
+  expect_error([&] { LM::optimize_particles(ps, cube(), field, CGAL::parameters::number_of_threads(2)); }, { "optimize_particles()", "edge_length" });
+  LM::Tetrahedral_mesh_3<Point_3> copy = mesh;
+  expect_error([&] { LM::flip_tetrahedra(copy, field, CGAL::parameters::maximum_ring_size(2)); }, { "flip_tetrahedra()", "maximum_ring_size" });
 }
 
+
+// The stage functions, called alone with their defaults and l*, chain into exactly what the
+// mesher does: the same particles after the optimization, the same mesh after the improvement
+// (a field turned against the cube's faces, so that every improvement stage has work).
+TEST(Lattice_mesh_3, StagesCalledAloneDoWhatThePipelineDoes)
+{
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.4, Eigen::Vector3d(1., 2., 3.).normalized()).toRotationMatrix();
+  const Field field(turn);
+  const double l = 1. / 6.;
+  const auto np = CGAL::parameters::edge_length(l).lattice(LM::Lattice_type::BCC).number_of_threads(2);
+  CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> pipeline(cube(), field, np.coarse_levels(0));
+  pipeline.optimize();
+
+  // the optimization at one level (coarse_levels(0)): rounds of 13, then 8 iterations, with
+  // deletion and insertion between them, until nothing changes or the energy no longer falls;
+  // then a last deletion, insertion and deletion, and a closing round to the tight tolerance
+  CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> start(cube(), field, np);
+  start.initialize_particles(l);
+  LM::Particle_set_3<Point_3> ps = start.particles();
+  LM::Optimization_result r = LM::optimize_particles(ps, cube(), field, np.number_of_iterations(13));
+  auto insert = [&] {
+    const std::size_t on_curves = LM::insert_feature_particles(ps, cube(), field, np);
+    return on_curves + LM::insert_particles(ps, cube(), field, np);
+  };
+  for(int round = 1; round <= 16; ++round) {
+    const std::size_t deleted = LM::delete_particles(ps, cube(), field, np);
+    if(deleted + insert() == 0) break;
+    const double previous = r.energy;
+    r = LM::optimize_particles(ps, cube(), field, np.number_of_iterations(round < 5 ? 13 : 8));
+    if(round >= 4 && r.energy > previous - 1e-4 * std::abs(previous)) break;
+  }
+  LM::delete_particles(ps, cube(), field, np);
+  insert();
+  LM::delete_particles(ps, cube(), field, np);
+  LM::optimize_particles(ps, cube(), field, np.number_of_iterations(0).gradient_tolerance(3e-3));
+  ASSERT_EQ(ps.points, pipeline.particles().points);
+  ASSERT_EQ(ps.kinds, pipeline.particles().kinds);
+
+  // the mesh: the tetrahedralization, flips and two rounds of smoothing (contractions before
+  // the second), the worst tetrahedra alone, contractions on the boundary, and the peeling
+  LM::Tetrahedral_mesh_3<Point_3> mesh = LM::tetrahedralize_particles(ps, cube(), field, np);
+  LM::flip_tetrahedra(mesh, field, np);
+  auto smooth_and_flip = [&](const auto& smoothing) {
+    const std::size_t moves = LM::smooth_vertices(mesh, cube(), field, smoothing);
+    if(moves > 0) LM::flip_tetrahedra(mesh, field);
+    return moves;
+  };
+  for(int round = 0; round < 2; ++round) {
+    if(round > 0) LM::collapse_edges(mesh, field);
+    if(smooth_and_flip(np) == 0) break;
+  }
+  smooth_and_flip(np.selection_angle(40.).worst_angle(45.).worst_weight(50.));
+  LM::collapse_edges(mesh, field, CGAL::parameters::boundary_angle(20.));
+  LM::peel_boundary_slivers(mesh, field);
+
+  const LM::Tetrahedral_mesh_3<Point_3> expected = pipeline.tetrahedralize();
+  EXPECT_GT(expected.tets.size(), 1000u);
+  EXPECT_EQ(mesh.points, expected.points);
+  EXPECT_EQ(mesh.tets, expected.tets);
+  EXPECT_EQ(mesh.boundary_faces, expected.boundary_faces);
+}
+
+// A traits class whose orientation predicate counts its calls: the object given to geom_traits()
+// is the one the tetrahedralization asks, and the mesh is the same as with the default traits.
+struct Counting_traits : CGAL::Lattice_mesher_traits_3<K>
+{
+  struct Orientation_3
+  {
+    std::shared_ptr<std::size_t> calls;
+    CGAL::Orientation operator()(const Point_3& p, const Point_3& q, const Point_3& r, const Point_3& s) const
+    {
+      ++*calls;
+      return K().orientation_3_object()(p, q, r, s);
+    }
+  };
+  Orientation_3 orientation_3_object() const { return Orientation_3{ calls }; }
+  std::shared_ptr<std::size_t> calls = std::make_shared<std::size_t>(0);
+};
+
+TEST(Lattice_mesh_3, GeomTraitsObjectIsTheOneUsed)
+{
+  const Field field;
+  const auto np = CGAL::parameters::edge_length(0.2).number_of_threads(2);
+  const LM::Tetrahedral_mesh_3<Point_3> plain = CGAL::lattice_mesh_3(cube(), field, np);
+  const Counting_traits gt;
+  const LM::Tetrahedral_mesh_3<Point_3> counted = CGAL::lattice_mesh_3(cube(), field, np.geom_traits(gt));
+  EXPECT_GT(*gt.calls, plain.tets.size());
+  EXPECT_EQ(counted.points, plain.points);
+  EXPECT_EQ(counted.tets, plain.tets);
+  const std::size_t calls = *gt.calls;
+  CGAL::Lattice_particle_mesher_3<Counting_traits, Domain, Field> mesher(cube(), field, np.geom_traits(gt));
+  mesher.optimize();
+  EXPECT_EQ(mesher.geom_traits().calls, gt.calls);
+  EXPECT_EQ(mesher.tetrahedralize().tets, plain.tets);
+  EXPECT_GT(*gt.calls, calls);
+}
+
+// A visitor may stop the optimization: the mesh is then made of the particles as they are.
+TEST(Lattice_mesh_3, VisitorStopsTheOptimization)
+{
+  struct Stop_after_two
+  {
+    int rounds = 0;
+    std::vector<std::string> stages;
+    bool round_done(const LM::Round_report&) { return ++rounds < 2; }
+    void stage_done(const char* stage, double) { stages.push_back(stage); }
+  } visitor;
+  const Field field;
+  const LM::Tetrahedral_mesh_3<Point_3> mesh =
+      CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(0.125).coarse_levels(1).visitor(std::ref(visitor)));
+  EXPECT_EQ(visitor.rounds, 2);
+  ASSERT_FALSE(visitor.stages.empty());
+  EXPECT_EQ(visitor.stages.front(), "tetrahedralization");
+  EXPECT_EQ(visitor.stages.back(), "peeling");
+  EXPECT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
+  // stopped at the coarse level: about an eighth of the vertices
+  const std::size_t full = CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(0.125).coarse_levels(1)).points.size();
+  EXPECT_LT(mesh.points.size(), full / 3);
+}
 
 TEST(Lattice_mesh_3, ClearErrors)
 {

@@ -70,7 +70,7 @@ TEST(Mesh_3_domains, PolyhedralDomainWithFeatures)
   for(const auto& t : mesh.tets)
     volume += CGAL::volume(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], mesh.points[t[3]]);
   EXPECT_NEAR(volume, 1., 1e-6);
-  EXPECT_GE(LM::compute_mesh_quality(mesh, Field(), LM::make_lattice(LM::Lattice_type::BCC)).theta_min.min, 30.);
+  EXPECT_GE(LM::compute_mesh_quality(mesh, Field(), CGAL::parameters::lattice(LM::make_lattice(LM::Lattice_type::BCC))).theta_min.min, 30.);
 }
 
 FT unit_sphere(const Point_3& p) { return p.x() * p.x() + p.y() * p.y() + p.z() * p.z() - 1.; }
@@ -95,7 +95,7 @@ TEST(Mesh_3_domains, ImplicitLabeledDomain)
   // less than the sagitta (1.5 l)^2 / 8
   EXPECT_LE(volume, 4. / 3. * CGAL_PI);
   EXPECT_GE(volume, 4. / 3. * CGAL_PI - 4. * CGAL_PI * (1.5 * l) * (1.5 * l) / 8.);
-  EXPECT_GE(LM::compute_mesh_quality(mesh, Field(), LM::make_lattice(LM::Lattice_type::BCC)).theta_min.min, 15.);
+  EXPECT_GE(LM::compute_mesh_quality(mesh, Field(), CGAL::parameters::lattice(LM::make_lattice(LM::Lattice_type::BCC))).theta_min.min, 15.);
 
   // with number_of_vertices, the sampling follows the l* of the count
   const auto counted = CGAL::lattice_mesh_3(domain, Field(), CGAL::parameters::number_of_vertices(2000).number_of_threads(2));

@@ -172,7 +172,7 @@ double json_number(const std::string& json, const std::string& key, std::size_t 
 TEST(TetrahedronQuality, RegularTetrahedron)
 {
   const Mesh m = tet_mesh(Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1));
-  const Mesh_quality_3 q = compute_mesh_quality(m, Constant_field(), bcc_lattice());
+  const Mesh_quality_3 q = compute_mesh_quality(m, Constant_field(), CGAL::parameters::lattice(bcc_lattice()));
   EXPECT_NEAR(q.theta_min.min, regular_dihedral, 1e-9);
   EXPECT_NEAR(q.theta_max.max, regular_dihedral, 1e-9);
   EXPECT_NEAR(q.rho.min, 1., 1e-12);
@@ -190,7 +190,7 @@ TEST(TetrahedronQuality, RegularTetrahedron)
 TEST(TetrahedronQuality, BccDelaunayTetrahedron)
 {
   const Mesh m = tet_mesh(Point(0, 0, 0), Point(1, 0, 0), Point(.5, .5, .5), Point(.5, .5, -.5));
-  const Mesh_quality_3 q = compute_mesh_quality(m, Constant_field(), bcc_lattice());
+  const Mesh_quality_3 q = compute_mesh_quality(m, Constant_field(), CGAL::parameters::lattice(bcc_lattice()));
   EXPECT_NEAR(q.theta_min.min, 60., 1e-9);
   EXPECT_NEAR(q.theta_max.max, 90., 1e-9);
   // 2 edges of length 1, 4 of sqrt(3)/2, circumradius sqrt(5)/4: rho = kappa = 3 sqrt(2) / (2 sqrt(5))
@@ -207,7 +207,7 @@ TEST(TetrahedronQuality, BccDelaunayTetrahedron)
   const double diagonal = face_diagonal_to_bcc;  // the same angle, body diagonal to face diagonal
   EXPECT_EQ(std::count_if(eps.begin(), eps.end(), [](double e) { return std::abs(e) < 1e-9; }), 2);
   EXPECT_EQ(std::count_if(eps.begin(), eps.end(), [&](double e) { return std::abs(e - diagonal) < 1e-9; }), 4);
-  const Mesh_quality_3 f = compute_mesh_quality(m, Constant_field(), fcc_lattice());
+  const Mesh_quality_3 f = compute_mesh_quality(m, Constant_field(), CGAL::parameters::lattice(fcc_lattice()));
   EXPECT_NEAR(f.epsilon.mean, 4. * diagonal / 6., 1e-9);
   EXPECT_NEAR(f.epsilon.std, std::sqrt(2. / 9.) * diagonal, 1e-9);  // values {0,0,d,d,d,d}
 }
@@ -216,7 +216,7 @@ TEST(TetrahedronQuality, SliverCountsAsBad)
 {
   const double h = 0.01;
   const Mesh m = tet_mesh(Point(0, 0, 0), Point(1, 1, 0), Point(1, 0, h), Point(0, 1, h));
-  const Mesh_quality_3 q = compute_mesh_quality(m, Constant_field(), bcc_lattice());
+  const Mesh_quality_3 q = compute_mesh_quality(m, Constant_field(), CGAL::parameters::lattice(bcc_lattice()));
   EXPECT_LT(q.theta_min.min, 2.);
   EXPECT_GT(q.theta_max.max, 178.);
   EXPECT_LT(q.kappa.min, 0.05);
@@ -228,7 +228,7 @@ TEST(TetrahedronQuality, SliverCountsAsBad)
 
   // theta_min 32 degrees: below 40 only
   const Mesh m30 = tet_mesh(Point(0, 0, 0), Point(1, 1, 0), Point(1, 0, .3), Point(0, 1, .3));
-  const Mesh_quality_3 q30 = compute_mesh_quality(m30, Constant_field(), bcc_lattice());
+  const Mesh_quality_3 q30 = compute_mesh_quality(m30, Constant_field(), CGAL::parameters::lattice(bcc_lattice()));
   ASSERT_GT(q30.theta_min.min, 20.);
   ASSERT_LT(q30.theta_min.min, 40.);
   EXPECT_EQ(q30.below20, 0u);
@@ -256,7 +256,7 @@ TEST(TetrahedronQuality, MeasuredInTheIsotropicSpace)
   auto stretched = [&](int i) { const Eigen::Vector3d q = t * p[i]; return Point(q[0], q[1], q[2]); };
   const Mesh m = tet_mesh(stretched(0), stretched(1), stretched(2), stretched(3));
 
-  const Mesh_quality_3 q = compute_mesh_quality(m, Constant_field(t), bcc_lattice());
+  const Mesh_quality_3 q = compute_mesh_quality(m, Constant_field(t), CGAL::parameters::lattice(bcc_lattice()));
   EXPECT_NEAR(q.theta_min.min, regular_dihedral, 1e-9);
   EXPECT_NEAR(q.theta_max.max, regular_dihedral, 1e-9);
   EXPECT_NEAR(q.rho.min, 1., 1e-12);
@@ -264,7 +264,7 @@ TEST(TetrahedronQuality, MeasuredInTheIsotropicSpace)
   EXPECT_NEAR(q.epsilon.mean, face_diagonal_to_bcc, 1e-9);
 
   // measured in physical space, the same tet is far from regular
-  const Mesh_quality_3 physical = compute_mesh_quality(m, Constant_field(), bcc_lattice());
+  const Mesh_quality_3 physical = compute_mesh_quality(m, Constant_field(), CGAL::parameters::lattice(bcc_lattice()));
   EXPECT_LT(physical.theta_min.min, 60.);
   EXPECT_LT(physical.rho.min, 0.9);
 }
@@ -272,7 +272,7 @@ TEST(TetrahedronQuality, MeasuredInTheIsotropicSpace)
 TEST(TetrahedronQuality, SingularFrameThrows)
 {
   const Mesh m = tet_mesh(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1));
-  EXPECT_THROW(compute_mesh_quality(m, Constant_field(Eigen::Matrix3d::Zero()), bcc_lattice()), std::domain_error);
+  EXPECT_THROW(compute_mesh_quality(m, Constant_field(Eigen::Matrix3d::Zero()), CGAL::parameters::lattice(bcc_lattice())), std::domain_error);
 }
 
 TEST(MeshQuality, SameResultForAnyThreadCount)
@@ -290,7 +290,7 @@ TEST(MeshQuality, SameResultForAnyThreadCount)
 #else
     (void)threads;
 #endif
-    return compute_mesh_quality(m, field, fcc_lattice());
+    return compute_mesh_quality(m, field, CGAL::parameters::lattice(fcc_lattice()));
   };
   const Mesh_quality_3 a = measure(1), b = measure(2);
   std::ostringstream ja, jb;
@@ -306,7 +306,7 @@ TEST(MeshQuality, SameResultForAnyThreadCount)
 TEST(MeshQuality, JsonHasExactlyTheKeysAndRoundTrips)
 {
   Mesh m = cube_mesh(2);
-  Mesh_quality_3 q = compute_mesh_quality(m, Constant_field(), bcc_lattice());
+  Mesh_quality_3 q = compute_mesh_quality(m, Constant_field(), CGAL::parameters::lattice(bcc_lattice()));
   q.hausdorff = 0.012345678901;
   q.hausdorff_over_size = 0.75;
   q.edge_length = 0.0625;

@@ -13,6 +13,7 @@
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/mesh_quality.h>
 #include <CGAL/Lattice_mesher_3/smooth_vertices.h>
+#include <CGAL/Lattice_mesher_3/internal/stage_parameters.h>
 
 #include <CGAL/Kernel/global_functions_3.h>
 #include <CGAL/enum.h>
@@ -29,7 +30,9 @@
 namespace CGAL {
 namespace Lattice_mesher_3 {
 
-/// Settings of `collapse_edges()`.
+namespace internal {
+
+// Settings of collapse_edges().
 struct Collapse_options
 {
   /// The edges of tetrahedra whose smallest dihedral angle (isotropic space, degrees) is below
@@ -46,6 +49,21 @@ struct Collapse_options
   /// the lattice can resolve (those of a coarse or noisy surface) give up a vertex.
   double short_edge_ratio = 0.25;
 };
+
+template <typename NamedParameters>
+Collapse_options collapse_options(const NamedParameters& np)
+{
+  Collapse_options o;
+  read_parameter(np, internal_np::floor_angle, o.floor_angle);
+  read_parameter(np, internal_np::boundary_angle, o.boundary_angle);
+  read_parameter(np, internal_np::boundary_turn_angle, o.boundary_turn);
+  read_parameter(np, internal_np::short_edge_ratio, o.short_edge_ratio);
+  if(!(o.boundary_angle >= 0.) || !(o.boundary_turn >= 0.) || !(o.short_edge_ratio >= 0.))
+    throw std::invalid_argument("collapse_edges(): boundary_angle(), boundary_turn_angle() and short_edge_ratio() must be at least 0");
+  return o;
+}
+
+} // namespace internal
 
 namespace internal {
 
@@ -110,37 +128,12 @@ bool link_condition(int a, int b, const std::vector<int>& star_a, const std::vec
 
 } // namespace internal
 
-/*!
-\ingroup PkgLatticeMesher3Flips
+namespace internal {
 
-Removes vertices at the worst tetrahedra by contracting one of their edges. Where a lattice
-defect (a dislocation of a rotating field, an extra particle where the lattice meets a curved
-boundary) leaves a cluster of bad tetrahedra sharing their vertices, neither a flip nor a move of
-one vertex raises the worst of them; removing the extra vertex can. An interior vertex `a` of a
-tetrahedron below `o.floor_angle` is merged into another vertex `b` of it: the tetrahedra around
-the edge go, the others of `a`'s star become cones from `b` over `a`'s link. An interior `b` is
-then placed where the smallest angle of its new star is largest (the pattern search of
-`smooth_vertices()` over the axis and diagonal directions, from `b` or the edge's midpoint); a boundary, sharp-edge or fixed `b` stays, so the boundary does not change. A
-contraction is made only if every tetrahedron of the new star is positively oriented (exact
-orientation tests: the cones then tile `a`'s star, so the mesh stays valid), its smallest angle
-(isotropic space of `field`, B at each centroid) is above that of the stars of `a` and `b`
-together, and it has no more tetrahedra below the floor; of the edges of a tetrahedron, the one
-whose new star is best. Worst tetrahedra first.
-
-With `o.boundary_angle` set, a vertex of the boundary that is on no sharp edge or corner, of a
-tetrahedron below that angle, may also be merged into a neighbour `b` on the boundary, which
-stays (a sharp-edge or corner vertex too if `b` is at most `o.short_edge_ratio` times the
-tetrahedron's longest edge away): the boundary faces at `a` become faces at `b`. This removes the slivers whose four
-vertices the surface holds, made by a short boundary edge (two particles projected close
-together where the domain is thin or curved), that no flip or move within the surface raises.
-Such a contraction is made only if it meets the link condition (the mesh stays a manifold with
-the same topology), no boundary face turns by more than `o.boundary_turn`, and the same
-conditions on the new star as above hold. Vertices are renumbered (the others keep their order).
-Needs `mesh.vertex_kinds`. Returns the number of removed vertices.
-*/
+// see collapse_edges()
 template <typename Point_3, typename FrameField>
 std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field,
-                           const Collapse_options& o = Collapse_options())
+                           const Collapse_options& o)
 {
   if(mesh.vertex_kinds.size() != mesh.points.size())
     throw std::invalid_argument("collapse_edges(): the mesh needs one particle kind per vertex");
@@ -334,6 +327,72 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
   mesh.boundary_faces.resize(live);
   internal::remove_vertices(mesh, removed);
   return collapses;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgLatticeMesher3Flips
+
+Removes vertices at the worst tetrahedra by contracting one of their edges. Where a lattice
+defect (a dislocation of a rotating field, an extra particle where the lattice meets a curved
+boundary) leaves a cluster of bad tetrahedra sharing their vertices, neither a flip nor a move of
+one vertex raises the worst of them; removing the extra vertex can. An interior vertex `a` of a
+tetrahedron below `floor_angle` is merged into another vertex `b` of it: the tetrahedra around
+the edge go, the others of `a`'s star become cones from `b` over `a`'s link. An interior `b` is
+then placed where the smallest angle of its new star is largest (the pattern search of
+`smooth_vertices()` over the axis and diagonal directions, from `b` or the edge's midpoint); a boundary, sharp-edge or fixed `b` stays, so the boundary does not change. A
+contraction is made only if every tetrahedron of the new star is positively oriented (exact
+orientation tests: the cones then tile `a`'s star, so the mesh stays valid), its smallest angle
+(isotropic space of `field`, B at each centroid) is above that of the stars of `a` and `b`
+together, and it has no more tetrahedra below the floor; of the edges of a tetrahedron, the one
+whose new star is best. Worst tetrahedra first.
+
+With `boundary_angle` set, a vertex of the boundary that is on no sharp edge or corner, of a
+tetrahedron below that angle, may also be merged into a neighbour `b` on the boundary, which
+stays (a sharp-edge or corner vertex too if `b` is at most `short_edge_ratio` times the
+tetrahedron's longest edge away): the boundary faces at `a` become faces at `b`. This removes the slivers whose four
+vertices the surface holds, made by a short boundary edge (two particles projected close
+together where the domain is thin or curved), that no flip or move within the surface raises.
+Such a contraction is made only if it meets the link condition (the mesh stays a manifold with
+the same topology), no boundary face turns by more than `boundary_turn_angle`, and the same
+conditions on the new star as above hold. Vertices are renumbered (the others keep their order).
+Needs `mesh.vertex_kinds`.
+
+\tparam FrameField a model of `FrameField_3`
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{floor_angle}
+    \cgalParamDescription{the edges of tetrahedra whose smallest dihedral angle (isotropic space, degrees) is below this are tried}
+    \cgalParamType{double}
+    \cgalParamDefault{40}
+  \cgalParamNEnd
+  \cgalParamNBegin{boundary_angle}
+    \cgalParamDescription{boundary vertices of tetrahedra below this angle are contracted too, into a neighbour on the boundary; 0 keeps every boundary vertex}
+    \cgalParamType{double}
+    \cgalParamDefault{0}
+  \cgalParamNEnd
+  \cgalParamNBegin{boundary_turn_angle}
+    \cgalParamDescription{... if no boundary face around the vertex turns by more than this (degrees), so that the boundary keeps its shape}
+    \cgalParamType{double}
+    \cgalParamDefault{30}
+  \cgalParamNEnd
+  \cgalParamNBegin{short_edge_ratio}
+    \cgalParamDescription{... and a vertex on a sharp edge or at a corner too, into a neighbour on the boundary at most this fraction of the tetrahedron's longest edge away}
+    \cgalParamType{double}
+    \cgalParamDefault{0.25}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the number of removed vertices
+\throws std::invalid_argument without a particle kind per vertex, or for a named parameter out of range
+*/
+template <typename Point_3, typename FrameField,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field,
+                           const NamedParameters& np = parameters::default_values())
+{
+  return internal::collapse_edges(mesh, field, internal::collapse_options(np));
 }
 
 } // namespace Lattice_mesher_3

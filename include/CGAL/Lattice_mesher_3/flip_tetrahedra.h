@@ -13,6 +13,7 @@
 #include <CGAL/Lattice_mesher_3/Lattice_3.h>
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/mesh_quality.h>
+#include <CGAL/Lattice_mesher_3/internal/stage_parameters.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/enum.h>
@@ -28,7 +29,9 @@
 namespace CGAL {
 namespace Lattice_mesher_3 {
 
-/// Settings of `flip_tetrahedra()`.
+namespace internal {
+
+// Settings of flip_tetrahedra().
 struct Flip_options
 {
   /// The lattice whose tetrahedra the mapped tetrahedra should match, and its cube edge l*.
@@ -55,6 +58,27 @@ struct Flip_options
   /// as the Catalan numbers; past 7 a removal almost never improves the worst tetrahedron).
   int max_ring_size = 7;
 };
+
+template <typename NamedParameters>
+Flip_options flip_options(const NamedParameters& np)
+{
+  Flip_options o;
+  read_parameter(np, internal_np::edge_length, o.edge_length);
+  if(o.edge_length > 0.) o.lattice = stage_lattice(np);
+  read_parameter(np, internal_np::shape_tolerance, o.shape_tolerance);
+  read_parameter(np, internal_np::floor_angle, o.floor_angle);
+  read_parameter(np, internal_np::target_angle, o.target_angle);
+  read_parameter(np, internal_np::boundary_flatness, o.boundary_flatness);
+  read_parameter(np, internal_np::number_of_passes, o.max_passes);
+  read_parameter(np, internal_np::maximum_ring_size, o.max_ring_size);
+  if(!(o.edge_length >= 0.) || !std::isfinite(o.edge_length) || !(o.shape_tolerance >= 0.) || !(o.boundary_flatness >= 0.))
+    throw std::invalid_argument("flip_tetrahedra(): edge_length(), shape_tolerance() and boundary_flatness() must be at least 0 and finite");
+  if(o.max_passes < 0 || o.max_ring_size < 3)
+    throw std::invalid_argument("flip_tetrahedra(): number_of_passes() must be at least 0 and maximum_ring_size() at least 3");
+  return o;
+}
+
+} // namespace internal
 
 /// What `flip_tetrahedra()` did.
 struct Flip_result
@@ -204,7 +228,7 @@ public:
   // remove_edge(), for the highest smallest angle. For inverted tetrahedra (a cell flat in the
   // embedding of tetrahedralize_particles(), within 1 degree: a sliver triangle on a flat boundary
   // face, folded over, is the one thing interior flips cannot undo), and for the worst ones on a
-  // planar part of the boundary (`Flip_options::boundary_flatness`).
+  // planar part of the boundary (`boundary_flatness`).
   int flip_boundary_edge(int a, int c, int max_ring, double flatness)
   {
     const Tet_list around = tets_around(a, c);
@@ -427,29 +451,12 @@ private:
 
 } // namespace internal
 
-/*!
-\ingroup PkgLatticeMesher3Flips
+namespace internal {
 
-Improves the connectivity of a tetrahedral mesh by topological flips: 2-3 flips of interior faces
-and removals of interior edges (3-2 and 4-4 flips, and the general edge removal with the best
-triangulation of the edge's ring), measured in the isotropic space of `field` (B at each
-tetrahedron's centroid). When `o.lattice` and `o.edge_length` are given, flips first lower the
-sum of the shape energies (`lattice_shape_energy()`) of the tetrahedra they replace, so that each
-mapped tetrahedron approaches a lattice tetrahedron: a Delaunay tetrahedralization ignores the
-field, this makes the connectivity follow it. Such a flip may not take the smallest angle below
-`o.floor_angle`. Then faces and edges of tetrahedra below `o.target_angle` are flipped when that
-raises the smallest dihedral angle of the tetrahedra replaced. Flips never create an inverted
-tetrahedron (exact orientation tests) and keep the boundary surface: interior flips leave
-boundary faces and edges alone; a boundary edge is flipped (2-2, with its two boundary faces)
-only where these lie in one plane, for a tetrahedron below `o.floor_angle` in the angle pass
-(`o.boundary_flatness`) and for an inverted one, which then changes `boundary_faces`. Inverted
-or flat tetrahedra in the input (the mesh as a complex is otherwise valid) count as the worst of
-all, so that flips remove them where they can, there also by 2-2 flips of two boundary faces
-within 1 degree of one plane; `o.target_angle = 0` does only that.
-*/
+// see flip_tetrahedra()
 template <typename Point_3, typename FrameField>
 Flip_result flip_tetrahedra(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field,
-                            const Flip_options& o = Flip_options())
+                            const Flip_options& o)
 {
   typedef internal::Flip_mesh<Point_3, FrameField> Flip_mesh;
   // an inverted tetrahedron's boundary faces: within 1 degree (sine) of one plane
@@ -488,6 +495,83 @@ Flip_result flip_tetrahedra(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField&
   run(Flip_mesh::ANGLE);
   fm.commit();
   return result;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgLatticeMesher3Flips
+
+Improves the connectivity of a tetrahedral mesh by topological flips: 2-3 flips of interior faces
+and removals of interior edges (3-2 and 4-4 flips, and the general edge removal with the best
+triangulation of the edge's ring), measured in the isotropic space of `field` (B at each
+tetrahedron's centroid). When `edge_length` is given, flips first lower the
+sum of the shape energies (`lattice_shape_energy()`) of the tetrahedra they replace, so that each
+mapped tetrahedron approaches a lattice tetrahedron: a Delaunay tetrahedralization ignores the
+field, this makes the connectivity follow it. Such a flip may not take the smallest angle below
+`floor_angle`. Then faces and edges of tetrahedra below `target_angle` are flipped when that
+raises the smallest dihedral angle of the tetrahedra replaced. Flips never create an inverted
+tetrahedron (exact orientation tests) and keep the boundary surface: interior flips leave
+boundary faces and edges alone; a boundary edge is flipped (2-2, with its two boundary faces)
+only where these lie in one plane, for a tetrahedron below `floor_angle` in the angle pass
+(`boundary_flatness`) and for an inverted one, which then changes `boundary_faces`. Inverted
+or flat tetrahedra in the input (the mesh as a complex is otherwise valid) count as the worst of
+all, so that flips remove them where they can, there also by 2-2 flips of two boundary faces
+within 1 degree of one plane; `target_angle(0)` does only that.
+
+\tparam FrameField a model of `FrameField_3`
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{edge_length}
+    \cgalParamDescription{l*: with it, flips first make the mapped tetrahedra approach those of `lattice` at this cube edge}
+    \cgalParamType{double}
+    \cgalParamDefault{0: no lattice, only the smallest angle is raised}
+  \cgalParamNEnd
+  \cgalParamNBegin{lattice}
+    \cgalParamDescription{the lattice whose tetrahedra the mapped tetrahedra should match}
+    \cgalParamType{`Lattice_type`}
+    \cgalParamDefault{`Lattice_type::BCC`}
+  \cgalParamNEnd
+  \cgalParamNBegin{shape_tolerance}
+    \cgalParamDescription{tetrahedra whose shape energy is below this are taken as lattice tetrahedra and not tried}
+    \cgalParamType{double}
+    \cgalParamDefault{0.05}
+  \cgalParamNEnd
+  \cgalParamNBegin{floor_angle}
+    \cgalParamDescription{shape-matching flips may not take the smallest angle of the tetrahedra they replace below this (or below its current value if that is lower); degrees}
+    \cgalParamType{double}
+    \cgalParamDefault{40}
+  \cgalParamNEnd
+  \cgalParamNBegin{target_angle}
+    \cgalParamDescription{then faces and edges of tetrahedra whose smallest dihedral angle is below this are tried for a higher smallest angle; 0 only removes inverted tetrahedra}
+    \cgalParamType{double}
+    \cgalParamDefault{50}
+  \cgalParamNEnd
+  \cgalParamNBegin{boundary_flatness}
+    \cgalParamDescription{a tetrahedron below `floor_angle` may 2-2 flip one of its boundary edges whose two boundary faces lie in one plane, the sine of the angle between their normals below this; 0: boundary faces are flipped only to remove inverted tetrahedra}
+    \cgalParamType{double}
+    \cgalParamDefault{1e-6}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_passes}
+    \cgalParamDescription{passes over the candidates of each criterion}
+    \cgalParamType{int}
+    \cgalParamDefault{8}
+  \cgalParamNEnd
+  \cgalParamNBegin{maximum_ring_size}
+    \cgalParamDescription{edges with more incident tetrahedra than this are not removed (the ring's triangulations grow as the Catalan numbers)}
+    \cgalParamType{int}
+    \cgalParamDefault{7}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws std::invalid_argument naming the named parameter that is out of range
+*/
+template <typename Point_3, typename FrameField,
+          typename NamedParameters = parameters::Default_named_parameters>
+Flip_result flip_tetrahedra(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field,
+                            const NamedParameters& np = parameters::default_values())
+{
+  return internal::flip_tetrahedra(mesh, field, internal::flip_options(np));
 }
 
 } // namespace Lattice_mesher_3

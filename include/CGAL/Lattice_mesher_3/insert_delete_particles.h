@@ -24,16 +24,9 @@
 namespace CGAL {
 namespace Lattice_mesher_3 {
 
-/*!
-\ingroup PkgLatticeMesher3InsertionDeletion
+namespace internal {
 
-Mesh-free particle deletion (Alg. 2): with D the ascending isotropic distances from a particle
-to its neighbours and l_c = l_closest, the particle is deleted if D[0] < 0.5 l_c, or the mean of
-D[0..1] < 0.75 l_c, of D[0..3] < 0.85 l_c, of D[0..5] < 0.9 l_c, or of D[0..7] < 0.95 l_c.
-Decisions are sequential against the particles that remain, so of a too-close pair only one goes;
-the least constrained go first (free, then boundary, then sharp-edge); fixed particles stay.
-Distances beyond the search radius count as that radius. Returns the number deleted.
-*/
+// see delete_particles()
 template <typename Domain, typename FrameField, typename Point_3>
 std::size_t delete_particles(Particle_set_3<Point_3>& ps, const Domain& /*domain*/, const FrameField& field,
                              const Lattice_3& lattice, const Optimization_options& o)
@@ -82,7 +75,6 @@ std::size_t delete_particles(Particle_set_3<Point_3>& ps, const Domain& /*domain
   return deleted;
 }
 
-namespace internal {
 
 // Candidates p_i + T(p_i) l O_k for the given offsets O_k (unit cube) and the particles i from
 // `first_source` on, projected on the boundary when outside, minus those within 0.1 l of a
@@ -229,19 +221,8 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
   return inserted;
 }
 
-} // namespace internal
 
-/*!
-\ingroup PkgLatticeMesher3InsertionDeletion
-
-Mesh-free particle insertion (Alg. 2): the candidates are the one-ring positions
-p_i + T(p_i) l* O_k of every particle; a candidate outside the domain is projected on the
-boundary (and on a sharp edge if it lands within `boundary_distance` x l* of one). Candidates
-within 0.1 l* of a particle or of an earlier candidate are dropped, the rest are sorted by the
-GHK energy a particle would have there, and accepted greedily when their nearest particle,
-accepted candidates included, is at least 0.75 l_closest away (all distances isotropic).
-Returns the number inserted.
-*/
+// see insert_particles()
 template <typename Domain, typename FrameField, typename Point_3>
 std::size_t insert_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
                              const Lattice_3& lattice, const Optimization_options& o)
@@ -250,34 +231,15 @@ std::size_t insert_particles(Particle_set_3<Point_3>& ps, const Domain& domain, 
                                      0.75 * lattice.closest_distance * o.edge_length, o);
 }
 
-/*!
-\ingroup PkgLatticeMesher3InsertionDeletion
-
-Coarse-to-fine refinement: the insertion of `insert_particles()` at the new (finer) edge length
-l* = `o.edge_length`, every particle p adding its one-ring p + T(p) l* O_k. From a lattice of edge
-2 l*, these are the points of the lattice of edge l*. The paper adds p +- l* T(p) t_m along the
-frame axes instead, which gives only the simple cubic part of the finer lattice (half of BCC's
-points, a quarter of FCC's), the rest being inserted only after another round at l* (fandisk
-BCC, 18,000 vertices: 5,358 then, 731 now). Returns the number added.
-*/
+// see refine_particles()
 template <typename Domain, typename FrameField, typename Point_3>
 std::size_t refine_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
                              const Lattice_3& lattice, const Optimization_options& o)
 {
-  return insert_particles(ps, domain, field, lattice, o);
+  return internal::insert_particles(ps, domain, field, lattice, o);
 }
 
-/*!
-\ingroup PkgLatticeMesher3InsertionDeletion
-
-Fills gaps along the sharp curves: for every sharp-edge particle, the points one l* away
-(isotropic) along its curve, both ways, projected on the curve, become sharp-edge particles
-unless a sharp-edge or fixed particle lies within 0.75 l_c of them, or any particle within 0.5 l_c.
-Where the lattice is offset by half a cell from a curve, the face particles beside it stand
-0.6 l_c from its points: the one-ring insertion, blocked at 0.75 l_c, leaves the curve bare over
-several cells, and the tetrahedralization cuts the corner (fig9 BCC: a notch 0.66 long). The
-next deletion then removes the crowded face particles. Returns the number inserted.
-*/
+// see insert_feature_particles()
 template <typename Domain, typename FrameField, typename Point_3>
 std::size_t insert_feature_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
                                      const Lattice_3& lattice, const Optimization_options& o)
@@ -322,16 +284,7 @@ std::size_t insert_feature_particles(Particle_set_3<Point_3>& ps, const Domain& 
   return inserted;
 }
 
-/*!
-\ingroup PkgLatticeMesher3InsertionDeletion
-
-Grows a particle set by rounds of `insert_particles()`, each followed by an optimization round of
-`o.max_iterations` L-BFGS iterations (`optimize_particles_round()`), until a round inserts
-nothing. From a single particle this lays one lattice grain that follows the field shell after
-shell; particles placed at random instead nucleate many grains, whose offsets mismatch where
-they meet (under fig8's field, 5 lattice cells across: grain boundaries all along the faces).
-Returns the number inserted.
-*/
+// see grow_particles()
 template <typename Domain, typename FrameField, typename Point_3>
 std::size_t grow_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
                            const Lattice_3& lattice, const Optimization_options& o)
@@ -345,47 +298,257 @@ std::size_t grow_particles(Particle_set_3<Point_3>& ps, const Domain& domain, co
     if(inserted == 0) break;
     total += inserted;
     front = before;
-    optimize_particles_round(ps, domain, field, lattice, o);
+    internal::optimize_particles_round(ps, domain, field, lattice, o);
   }
   return total;
 }
+} // namespace internal
 
-/// \ingroup PkgLatticeMesher3InsertionDeletion
-/// `delete_particles()` with the named parameters `edge_length` (required), `lattice` (BCC),
-/// `neighbor_radius_ratio` (1.3) and `number_of_threads` (1).
+/*!
+\ingroup PkgLatticeMesher3InsertionDeletion
+
+Mesh-free particle deletion (Alg. 2): with D the ascending isotropic distances from a particle
+to its neighbours and l_c = l_closest, the particle is deleted if D[0] < 0.5 l_c, or the mean of
+D[0..1] < 0.75 l_c, of D[0..3] < 0.85 l_c, of D[0..5] < 0.9 l_c, or of D[0..7] < 0.95 l_c.
+Decisions are sequential against the particles that remain, so of a too-close pair only one goes;
+the least constrained go first (free, then boundary, then sharp-edge); fixed particles stay.
+Distances beyond the search radius count as that radius. Returns the number deleted.
+
+\tparam Domain a model of `LatticeMeshDomain_3`
+\tparam FrameField a model of `FrameField_3`
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{edge_length}
+    \cgalParamDescription{l*, the lattice cube edge in the isotropic space of the field}
+    \cgalParamType{double}
+    \cgalParamExtra{required}
+  \cgalParamNEnd
+  \cgalParamNBegin{lattice}
+    \cgalParamDescription{the lattice: its one-ring and closest distance l_closest}
+    \cgalParamType{`Lattice_type`}
+    \cgalParamDefault{`Lattice_type::BCC`}
+  \cgalParamNEnd
+  \cgalParamNBegin{neighbor_radius_ratio}
+    \cgalParamDescription{R / l*: the isotropic radius of the neighbour search}
+    \cgalParamType{double}
+    \cgalParamDefault{1.3}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{OpenMP threads}
+    \cgalParamType{int}
+    \cgalParamDefault{1}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws std::invalid_argument naming the named parameter that is missing or out of range
+*/
 template <typename Domain, typename FrameField, typename Point_3,
           typename NamedParameters = parameters::Default_named_parameters>
 std::size_t delete_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
                              const NamedParameters& np = parameters::default_values())
 {
-  return delete_particles(ps, domain, field, internal::stage_lattice(np),
-                          internal::stage_options<Optimization_options>(np, "delete_particles"));
+  return internal::delete_particles(ps, domain, field, internal::stage_lattice(np), internal::optimization_options(np, "delete_particles"));
 }
 
-/// \ingroup PkgLatticeMesher3InsertionDeletion
-/// `insert_particles()` with the named parameters `edge_length` (required), `lattice` (BCC),
-/// `sigma_ratio` (0.3) and `number_of_threads` (1).
+/*!
+\ingroup PkgLatticeMesher3InsertionDeletion
+
+Mesh-free particle insertion (Alg. 2): the candidates are the one-ring positions
+p_i + T(p_i) l* O_k of every particle; a candidate outside the domain is projected on the
+boundary (and on a sharp edge if it lands within `boundary_distance_ratio` x l* of one). Candidates
+within 0.1 l* of a particle or of an earlier candidate are dropped, the rest are sorted by the
+GHK energy a particle would have there, and accepted greedily when their nearest particle,
+accepted candidates included, is at least 0.75 l_closest away (all distances isotropic).
+Returns the number inserted.
+
+\tparam Domain a model of `LatticeMeshDomain_3`
+\tparam FrameField a model of `FrameField_3`
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{edge_length}
+    \cgalParamDescription{l*, the lattice cube edge in the isotropic space of the field}
+    \cgalParamType{double}
+    \cgalParamExtra{required}
+  \cgalParamNEnd
+  \cgalParamNBegin{lattice}
+    \cgalParamDescription{the lattice: its one-ring and closest distance l_closest}
+    \cgalParamType{`Lattice_type`}
+    \cgalParamDefault{`Lattice_type::BCC`}
+  \cgalParamNEnd
+  \cgalParamNBegin{sigma_ratio}
+    \cgalParamDescription{sigma / l_closest of the kernel, whose energy ranks the candidates}
+    \cgalParamType{double}
+    \cgalParamDefault{0.3}
+  \cgalParamNEnd
+  \cgalParamNBegin{neighbor_radius_ratio}
+    \cgalParamDescription{R / l*: the isotropic radius of the neighbour search}
+    \cgalParamType{double}
+    \cgalParamDefault{1.3}
+  \cgalParamNEnd
+  \cgalParamNBegin{boundary_distance_ratio}
+    \cgalParamDescription{a candidate this close (times l*) to a sharp edge is projected on it}
+    \cgalParamType{double}
+    \cgalParamDefault{0.3}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{OpenMP threads}
+    \cgalParamType{int}
+    \cgalParamDefault{1}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws std::invalid_argument naming the named parameter that is missing or out of range
+*/
 template <typename Domain, typename FrameField, typename Point_3,
           typename NamedParameters = parameters::Default_named_parameters>
 std::size_t insert_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
                              const NamedParameters& np = parameters::default_values())
 {
-  return insert_particles(ps, domain, field, internal::stage_lattice(np),
-                          internal::stage_options<Optimization_options>(np, "insert_particles"));
+  return internal::insert_particles(ps, domain, field, internal::stage_lattice(np), internal::optimization_options(np, "insert_particles"));
 }
 
-/// \ingroup PkgLatticeMesher3InsertionDeletion
-/// `grow_particles()` with the named parameters `edge_length` (required), `lattice` (BCC),
-/// `number_of_iterations` after each insertion (5) and `number_of_threads` (1).
+/*!
+\ingroup PkgLatticeMesher3InsertionDeletion
+
+Coarse-to-fine refinement: the insertion of `insert_particles()` at the new (finer) edge length
+l* = `edge_length`, every particle p adding its one-ring p + T(p) l* O_k. From a lattice of edge
+2 l*, these are the points of the lattice of edge l*. The paper adds p +- l* T(p) t_m along the
+frame axes instead, which gives only the simple cubic part of the finer lattice (half of BCC's
+points, a quarter of FCC's), the rest being inserted only after another round at l* (fandisk
+BCC, 18,000 vertices: 5,358 then, 731 now). Returns the number added.
+
+\tparam Domain a model of `LatticeMeshDomain_3`
+\tparam FrameField a model of `FrameField_3`
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{edge_length}
+    \cgalParamDescription{l*, the lattice cube edge in the isotropic space of the field}
+    \cgalParamType{double}
+    \cgalParamExtra{required}
+  \cgalParamNEnd
+  \cgalParamNBegin{lattice}
+    \cgalParamDescription{the lattice: its one-ring and closest distance l_closest}
+    \cgalParamType{`Lattice_type`}
+    \cgalParamDefault{`Lattice_type::BCC`}
+  \cgalParamNEnd
+  \cgalParamNBegin{sigma_ratio}
+    \cgalParamDescription{sigma / l_closest of the kernel, whose energy ranks the candidates}
+    \cgalParamType{double}
+    \cgalParamDefault{0.3}
+  \cgalParamNEnd
+  \cgalParamNBegin{neighbor_radius_ratio}
+    \cgalParamDescription{R / l*: the isotropic radius of the neighbour search}
+    \cgalParamType{double}
+    \cgalParamDefault{1.3}
+  \cgalParamNEnd
+  \cgalParamNBegin{boundary_distance_ratio}
+    \cgalParamDescription{a candidate this close (times l*) to a sharp edge is projected on it}
+    \cgalParamType{double}
+    \cgalParamDefault{0.3}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{OpenMP threads}
+    \cgalParamType{int}
+    \cgalParamDefault{1}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws std::invalid_argument naming the named parameter that is missing or out of range
+*/
+template <typename Domain, typename FrameField, typename Point_3,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t refine_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
+                             const NamedParameters& np = parameters::default_values())
+{
+  return internal::refine_particles(ps, domain, field, internal::stage_lattice(np), internal::optimization_options(np, "refine_particles"));
+}
+
+/*!
+\ingroup PkgLatticeMesher3InsertionDeletion
+
+Fills gaps along the sharp curves: for every sharp-edge particle, the points one l* away
+(isotropic) along its curve, both ways, projected on the curve, become sharp-edge particles
+unless a sharp-edge or fixed particle lies within 0.75 l_c of them, or any particle within 0.5 l_c.
+Where the lattice is offset by half a cell from a curve, the face particles beside it stand
+0.6 l_c from its points: the one-ring insertion, blocked at 0.75 l_c, leaves the curve bare over
+several cells, and the tetrahedralization cuts the corner (fig9 BCC: a notch 0.66 long). The
+next deletion then removes the crowded face particles. Returns the number inserted.
+
+\tparam Domain a model of `LatticeMeshDomain_3`
+\tparam FrameField a model of `FrameField_3`
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{edge_length}
+    \cgalParamDescription{l*, the lattice cube edge in the isotropic space of the field}
+    \cgalParamType{double}
+    \cgalParamExtra{required}
+  \cgalParamNEnd
+  \cgalParamNBegin{lattice}
+    \cgalParamDescription{the lattice: its one-ring and closest distance l_closest}
+    \cgalParamType{`Lattice_type`}
+    \cgalParamDefault{`Lattice_type::BCC`}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{OpenMP threads}
+    \cgalParamType{int}
+    \cgalParamDefault{1}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws std::invalid_argument naming the named parameter that is missing or out of range
+*/
+template <typename Domain, typename FrameField, typename Point_3,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t insert_feature_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
+                                     const NamedParameters& np = parameters::default_values())
+{
+  return internal::insert_feature_particles(ps, domain, field, internal::stage_lattice(np), internal::optimization_options(np, "insert_feature_particles"));
+}
+
+/*!
+\ingroup PkgLatticeMesher3InsertionDeletion
+
+Grows a particle set by rounds of `insert_particles()`, each followed by an optimization round of
+`number_of_iterations` L-BFGS iterations (`optimize_particles()`), until a round inserts
+nothing. From a single particle this lays one lattice grain that follows the field shell after
+shell; particles placed at random instead nucleate many grains, whose offsets mismatch where
+they meet (under fig8's field, 5 lattice cells across: grain boundaries all along the faces).
+Returns the number inserted.
+
+\tparam Domain a model of `LatticeMeshDomain_3`
+\tparam FrameField a model of `FrameField_3`
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{edge_length}
+    \cgalParamDescription{l*, the lattice cube edge in the isotropic space of the field}
+    \cgalParamType{double}
+    \cgalParamExtra{required}
+  \cgalParamNEnd
+  \cgalParamNBegin{lattice}
+    \cgalParamDescription{the lattice: its one-ring and closest distance l_closest}
+    \cgalParamType{`Lattice_type`}
+    \cgalParamDefault{`Lattice_type::BCC`}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_iterations}
+    \cgalParamDescription{L-BFGS iterations after each insertion}
+    \cgalParamType{int}
+    \cgalParamDefault{5}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+The other named parameters of `optimize_particles()` apply to its rounds.
+
+\throws std::invalid_argument naming the named parameter that is missing or out of range
+*/
 template <typename Domain, typename FrameField, typename Point_3,
           typename NamedParameters = parameters::Default_named_parameters>
 std::size_t grow_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
                            const NamedParameters& np = parameters::default_values())
 {
-  Optimization_options o = internal::stage_options<Optimization_options>(np, "grow_particles");
+  internal::Optimization_options o = internal::optimization_options(np, "grow_particles");
   o.max_iterations = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_iterations), 5);
-  return grow_particles(ps, domain, field, internal::stage_lattice(np), o);
+  return internal::grow_particles(ps, domain, field, internal::stage_lattice(np), o);
 }
+
 
 } // namespace Lattice_mesher_3
 } // namespace CGAL

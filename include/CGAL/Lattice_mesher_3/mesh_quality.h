@@ -13,6 +13,7 @@
 #include <CGAL/Lattice_mesher_3/Lattice_3.h>
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/frame_fields.h>
+#include <CGAL/Lattice_mesher_3/internal/stage_parameters.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -361,16 +362,19 @@ std::vector<double> compute_edge_alignment_errors(const Tetrahedral_mesh_3<Point
 \ingroup PkgLatticeMesher3Quality
 Measures `mesh` in the isotropic space of `field`: the dihedral angles, rho and kappa of every
 tetrahedron (mapped by B at its centroid) and the alignment error epsilon of every edge with
-respect to `lattice` (mapped by B at its midpoint). The result is the same for any number of
+respect to the one-ring of the named parameter `lattice` (a `Lattice_type` or a `Lattice_3`,
+default BCC; mapped by B at its midpoint). The result is the same for any number of
 threads. `hausdorff` is left negative (see `boundary_hausdorff_distance()`) and `seconds` at 0.
 
 \tparam FrameField a model of `FrameField_3` for points of type `Point_3`
 \throws std::domain_error if the frame is singular at a centroid or a midpoint
 */
-template <typename Point_3, typename FrameField>
+template <typename Point_3, typename FrameField,
+          typename NamedParameters = parameters::Default_named_parameters>
 Mesh_quality_3 compute_mesh_quality(const Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field,
-                                    const Lattice_3& lattice)
+                                    const NamedParameters& np = parameters::default_values())
 {
+  const Lattice_3 lattice = internal::stage_lattice(np);
   Mesh_quality_3 result;
   result.vertices = mesh.points.size();
   result.tets = mesh.tets.size();
@@ -652,17 +656,19 @@ Writes the distributions summarized by `compute_mesh_quality()`, with the same m
 isotropic space and the same formulas, as CSV histograms with the header `quantity,value,count`:
 `dihedral` counts the six dihedral angles of every tetrahedron (degrees, bins of 1 on [0, 180]),
 `rho` and `kappa` every tetrahedron (bins of 0.01 on [0, 1]) and `epsilon` the alignment error of
-every unique edge with respect to `lattice` (degrees, bins of 0.5 on [0, 90]). `value` is the
+every unique edge with respect to the named parameter `lattice` (as for `compute_mesh_quality()`; degrees, bins of 0.5 on [0, 90]). `value` is the
 centre of a bin; values beyond the last bin are counted in it. Every bin is written, empty or not.
 
 \tparam FrameField a model of `FrameField_3` for points of type `Point_3`
 \throws std::domain_error if the frame is singular at a centroid or a midpoint
 \throws std::runtime_error if the stream fails
 */
-template <typename Point_3, typename FrameField>
+template <typename Point_3, typename FrameField,
+          typename NamedParameters = parameters::Default_named_parameters>
 void write_quality_histograms_csv(std::ostream& os, const Tetrahedral_mesh_3<Point_3>& mesh,
-                                  const FrameField& field, const Lattice_3& lattice)
+                                  const FrameField& field, const NamedParameters& np = parameters::default_values())
 {
+  const Lattice_3 lattice = internal::stage_lattice(np);
   // per tetrahedron: its six dihedral angles, rho and kappa, computed in parallel and binned in order
   std::vector<std::array<double, 8> > values(mesh.tets.size());
   internal::parallel_for_rethrow(mesh.tets.size(), [&](std::size_t t) {

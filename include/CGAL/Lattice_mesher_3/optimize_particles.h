@@ -31,7 +31,18 @@
 namespace CGAL {
 namespace Lattice_mesher_3 {
 
-/// Settings of one optimization round (Alg. 1 of the paper); defaults are the paper's.
+/// What a round did.
+struct Optimization_result
+{
+  int iterations = 0;
+  int restarts = 0;       ///< line-search failures recovered by restarting L-BFGS
+  double energy = 0.;     ///< total GHK energy over interacting pairs, at the end
+  double gradient_rms = 0.;
+};
+
+namespace internal {
+
+// Settings of one optimization round (Alg. 1 of the paper); the defaults are the paper's.
 struct Optimization_options
 {
   double edge_length = 0.;          ///< l*, in the isotropic space
@@ -53,16 +64,35 @@ struct Optimization_options
   int threads = 1;
 };
 
-/// What a round did.
-struct Optimization_result
-{
-  int iterations = 0;
-  int restarts = 0;       ///< line-search failures recovered by restarting L-BFGS
-  double energy = 0.;     ///< total GHK energy over interacting pairs, at the end
-  double gradient_rms = 0.;
-};
 
-namespace internal {
+// The settings of optimize_particles(), delete_particles(), insert_particles(),
+// refine_particles() and grow_particles() from their named parameters.
+template <typename NamedParameters>
+Optimization_options optimization_options(const NamedParameters& np, const char* stage)
+{
+  Optimization_options o;
+  o.edge_length = required_edge_length(np, stage);
+  read_parameter(np, internal_np::neighbor_radius_ratio, o.neighbor_radius);
+  read_parameter(np, internal_np::gradient_tolerance, o.gradient_tolerance);
+  read_parameter(np, internal_np::number_of_iterations, o.max_iterations);
+  read_parameter(np, internal_np::maximum_number_of_iterations, o.iteration_cap);
+  read_parameter(np, internal_np::stall_tolerance, o.stall_tolerance);
+  read_parameter(np, internal_np::boundary_distance_ratio, o.boundary_distance);
+  read_parameter(np, internal_np::free_particles_join_boundary, o.free_particles_join_boundary);
+  read_parameter(np, internal_np::number_of_threads, o.threads);
+  auto require = [&](bool ok, const char* what) {
+    if(!ok) throw std::invalid_argument(std::string(stage) + "(): the named parameter " + what);
+  };
+  require(o.neighbor_radius > 0. && std::isfinite(o.neighbor_radius), "neighbor_radius_ratio() must be positive and finite");
+  require(o.gradient_tolerance > 0. && std::isfinite(o.gradient_tolerance), "gradient_tolerance() must be positive and finite");
+  require(o.max_iterations >= 0, "number_of_iterations() must be at least 0");
+  require(o.iteration_cap >= 1, "maximum_number_of_iterations() must be at least 1");
+  require(o.stall_tolerance >= 0., "stall_tolerance() must be at least 0");
+  require(o.boundary_distance >= 0. && o.boundary_distance < 1., "boundary_distance_ratio() must be in [0, 1)");
+  require(o.threads >= 1, "number_of_threads() must be at least 1");
+  return o;
+}
+
 
 // The total GHK energy of a particle set, over a frozen neighbour graph, as a function of the
 // variables U: particle i is at X0_i + M_i U_i (units of l*), with M_i = P_i T_i. T_i, the frame
@@ -178,24 +208,12 @@ std::vector<Mat3> motion_maps(const Particle_set_3<Point_3>& ps, const Domain& d
   return m;
 }
 
-} // namespace internal
-
-/*!
-\ingroup PkgLatticeMesher3Optimizer
-
-Snaps particles to their constraints after an optimization round (Alg. 1, lines 14-21): a
-free particle outside the domain, or inside within `boundary_distance` x l* of the boundary
-(measured in the isotropic space of the field), is projected on the boundary and becomes a
-boundary particle (or, without `free_particles_join_boundary`, is put back inside at that
-distance along the inward normal); a boundary particle that close to a sharp edge is projected
-on it and becomes a sharp-edge particle. Boundary and sharp-edge particles, which slid along tangent planes and
-lines, are put back on their surface and curve. Returns the number of particles that changed kind.
-*/
+// Alg. 1, lines 14-21: see snap_particles_to_boundary().
 template <typename Domain, typename FrameField, typename Point_3>
 std::size_t snap_particles_to_boundary(Particle_set_3<Point_3>& ps, const Domain& domain,
                                        const FrameField& field, const Optimization_options& o)
 {
-  using internal::Vec3;
+
   const double threshold = o.boundary_distance * o.edge_length;
   const bool has_features = domain.number_of_curves() > 0;
   std::size_t changed = 0;
@@ -205,13 +223,13 @@ std::size_t snap_particles_to_boundary(Particle_set_3<Point_3>& ps, const Domain
     Particle_kind& kind = ps.kinds[i];
     if(kind == Particle_kind::FIXED) continue;
     if(kind == Particle_kind::SHARP_EDGE) { p = domain.project_on_curve(p, std::size_t(ps.feature[i])).point; continue; }
-    const Eigen::Matrix3d T = field.frame(p), B = internal::isotropic_map(T, p);
+    const Eigen::Matrix3d T = field.frame(p), B = isotropic_map(T, p);
     // a free particle deep inside by the domain's cheap bound (|B d| >= |d| / |T|) stays
     if(kind == Particle_kind::FREE && domain.inside_distance_bound(p) > threshold * T.norm()) continue;
     const auto s = domain.project_on_surface(p);
     if(kind == Particle_kind::FREE) {
       auto clearance = [&](const Point_3& q, const decltype(s)& sq) {   // isotropic; -1 outside
-        return domain.is_inside(q) ? (B * (internal::to_eigen(q) - internal::to_eigen(sq.point))).norm() : -1.;
+        return domain.is_inside(q) ? (B * (to_eigen(q) - to_eigen(sq.point))).norm() : -1.;
       };
       if(clearance(p, s) > threshold) continue;
       if(!o.free_particles_join_boundary) {
@@ -219,8 +237,8 @@ std::size_t snap_particles_to_boundary(Particle_set_3<Point_3>& ps, const Domain
         // the next face, whose normal the next step follows
         auto t = s;
         for(int step = 0; step < 3 && (step == 0 || clearance(p, t) < 0.999 * threshold); ++step) {
-          const Vec3 n = internal::to_eigen(t.direction);
-          const Vec3 q = internal::to_eigen(t.point) - n * (threshold / (std::max)((B * n).norm(), 1e-300));
+          const Vec3 n = to_eigen(t.direction);
+          const Vec3 q = to_eigen(t.point) - n * (threshold / (std::max)((B * n).norm(), 1e-300));
           p = Point_3(q[0], q[1], q[2]);
           t = domain.project_on_surface(p);
         }
@@ -232,7 +250,7 @@ std::size_t snap_particles_to_boundary(Particle_set_3<Point_3>& ps, const Domain
     p = s.point;
     if(has_features) {
       const auto c = domain.project_on_features(p);
-      if(c.index >= 0 && (B * (internal::to_eigen(p) - internal::to_eigen(c.point))).norm() <= threshold) {
+      if(c.index >= 0 && (B * (to_eigen(p) - to_eigen(c.point))).norm() <= threshold) {
         p = c.point;
         kind = Particle_kind::SHARP_EDGE;
         ps.feature[i] = c.index;
@@ -243,25 +261,14 @@ std::size_t snap_particles_to_boundary(Particle_set_3<Point_3>& ps, const Domain
   return changed;
 }
 
-/*!
-\ingroup PkgLatticeMesher3Optimizer
-
-One optimization round (Alg. 1): minimizes the GHK energy of the particles with L-BFGS (LBFGS++)
-over the pairs within `neighbor_radius` x l* in the isotropic space. Each pair's map is B at its
-midpoint, to first order during the round (B((p_i + p_j)/2) at the start, and the slope of B
-estimated from the particles' maps), so that L-BFGS sees a smooth energy and its exact gradient,
-and its minimum is the lattice of the isotropic coordinates where the field varies. Stops when the RMS gradient (in units of 1/l*) is below `gradient_tolerance`, or after
-`max_iterations`; without an iteration limit the neighbour graph is rebuilt every 50 iterations
-so that pairs coming into range are not missed. A line-search failure restarts L-BFGS from the
-best point seen. Ends with `snap_particles_to_boundary()`.
-*/
+// One round of Alg. 1: see optimize_particles().
 template <typename Domain, typename FrameField, typename Point_3>
 Optimization_result optimize_particles_round(Particle_set_3<Point_3>& ps, const Domain& domain,
                                              const FrameField& field, const Lattice_3& lattice,
                                              const Optimization_options& o)
 {
   typedef typename Domain::Geom_traits K;
-  using internal::Vec3;
+
   if(!(o.edge_length > 0.) || !std::isfinite(o.edge_length))
     throw std::invalid_argument("optimize_particles_round(): the edge length must be positive and finite");
 
@@ -283,14 +290,14 @@ Optimization_result optimize_particles_round(Particle_set_3<Point_3>& ps, const 
   std::vector<Point_3> previous_points;
   double previous_energy = std::numeric_limits<double>::infinity();
   while(remaining > 0) {
-    std::vector<Vec3> x = internal::to_vectors(ps.points);
-    const internal::Particle_frames frames = internal::compute_particle_frames<K>(x, field, o.threads);
-    internal::Neighbor_graph graph =
-      internal::build_neighbor_graph<K>(x, frames, field, o.neighbor_radius * o.edge_length, o.threads);
-    const std::vector<internal::Mat3> maps = internal::motion_maps(ps, domain, frames, o.threads);
+    std::vector<Vec3> x = to_vectors(ps.points);
+    const Particle_frames frames = compute_particle_frames<K>(x, field, o.threads);
+    Neighbor_graph graph =
+      build_neighbor_graph<K>(x, frames, field, o.neighbor_radius * o.edge_length, o.threads);
+    const std::vector<Mat3> maps = motion_maps(ps, domain, frames, o.threads);
     for(Vec3& p : x) p /= o.edge_length;
-    internal::estimate_map_slopes(graph, x, frames.B, o.threads);
-    internal::Particle_energy_3 energy(graph, kernel, x, maps, o.threads);
+    estimate_map_slopes(graph, x, frames.B, o.threads);
+    Particle_energy_3 energy(graph, kernel, x, maps, o.threads);
     Eigen::VectorXd X = Eigen::VectorXd::Zero(3 * n);   // the variables U, from the start
 
     LBFGSpp::LBFGSParam<double> param;
@@ -341,26 +348,143 @@ Optimization_result optimize_particles_round(Particle_set_3<Point_3>& ps, const 
     previous_points = ps.points;
     previous_energy = result.energy;
   }
-  snap_particles_to_boundary(ps, domain, field, o);
+  internal::snap_particles_to_boundary(ps, domain, field, o);
   return result;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgLatticeMesher3Optimizer
+
+Snaps particles to their constraints, as each optimization round ends (Alg. 1, lines 14-21): a
+free particle outside the domain, or inside within `boundary_distance_ratio` x l* of the
+boundary (measured in the isotropic space of the field), is projected on the boundary and
+becomes a boundary particle (or, without `free_particles_join_boundary`, is put back inside at
+that distance along the inward normal); a boundary particle that close to a sharp edge is
+projected on it and becomes a sharp-edge particle. Boundary and sharp-edge particles, which slid
+along tangent planes and lines, are put back on their surface and curve.
+
+\tparam Domain a model of `LatticeMeshDomain_3`
+\tparam FrameField a model of `FrameField_3`
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{edge_length}
+    \cgalParamDescription{l*, the lattice cube edge in the isotropic space of the field}
+    \cgalParamType{double}
+    \cgalParamExtra{required}
+  \cgalParamNEnd
+  \cgalParamNBegin{boundary_distance_ratio}
+    \cgalParamDescription{particles closer than this times l* to the boundary, or to a sharp edge, snap to it}
+    \cgalParamType{double, in [0, 1)}
+    \cgalParamDefault{0.3}
+  \cgalParamNEnd
+  \cgalParamNBegin{free_particles_join_boundary}
+    \cgalParamDescription{whether a free particle that leaves the domain or comes that close to its
+      boundary becomes a boundary particle; `false` puts it back inside and keeps the number of
+      boundary particles (Particle2013, whose hole-less kernel would push the interior onto the boundary)}
+    \cgalParamType{bool}
+    \cgalParamDefault{true}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the number of particles that changed kind
+\throws std::invalid_argument naming the named parameter that is missing or out of range
+*/
+template <typename Domain, typename FrameField, typename Point_3,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t snap_particles_to_boundary(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
+                                       const NamedParameters& np = parameters::default_values())
+{
+  return internal::snap_particles_to_boundary(ps, domain, field,
+                                              internal::optimization_options(np, "snap_particles_to_boundary"));
 }
 
 /*!
 \ingroup PkgLatticeMesher3Optimizer
 
-One optimization round, as `optimize_particles_round(ps, domain, field, lattice, options)`, with the
-settings given as named parameters: `edge_length` (required), `lattice` (default BCC),
-`sigma_ratio` (0.3), `neighbor_radius_ratio` (1.3), `gradient_tolerance` (0.01),
-`number_of_iterations` (MaxIts, 13; 0 runs to convergence) and `number_of_threads` (1).
+One optimization round (Alg. 1): minimizes the GHK energy of the particles with L-BFGS (LBFGS++)
+over the pairs within `neighbor_radius_ratio` x l* in the isotropic space. Each pair's map is B
+at its midpoint, to first order during the round (B((p_i + p_j)/2) at the start, and the slope
+of B estimated from the particles' maps), so that L-BFGS sees a smooth energy and its exact
+gradient, and its minimum is the lattice of the isotropic coordinates where the field varies.
+Stops when the RMS gradient (in units of 1/l*) is below `gradient_tolerance`, or after
+`number_of_iterations`; without an iteration limit the neighbour graph is rebuilt every 50
+iterations so that pairs coming into range are not missed. A line-search failure restarts
+L-BFGS from the best point seen. Ends with `snap_particles_to_boundary()`.
+`Lattice_particle_mesher_3` calls it with these defaults, except that the closing round of the
+finest level runs to `final_gradient_tolerance` without an iteration limit.
+
+\tparam Domain a model of `LatticeMeshDomain_3`
+\tparam FrameField a model of `FrameField_3`
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{edge_length}
+    \cgalParamDescription{l*, the lattice cube edge in the isotropic space of the field}
+    \cgalParamType{double}
+    \cgalParamExtra{required}
+  \cgalParamNEnd
+  \cgalParamNBegin{lattice}
+    \cgalParamDescription{the lattice whose one-ring the kernel's holes sit at}
+    \cgalParamType{`Lattice_type`}
+    \cgalParamDefault{`Lattice_type::BCC`}
+  \cgalParamNEnd
+  \cgalParamNBegin{sigma_ratio}
+    \cgalParamDescription{sigma / l_closest of the kernel}
+    \cgalParamType{double}
+    \cgalParamDefault{0.3}
+  \cgalParamNEnd
+  \cgalParamNBegin{neighbor_radius_ratio}
+    \cgalParamDescription{R / l*: pairs closer than R in the isotropic space interact}
+    \cgalParamType{double}
+    \cgalParamDefault{1.3}
+  \cgalParamNEnd
+  \cgalParamNBegin{gradient_tolerance}
+    \cgalParamDescription{EpsG on the RMS particle gradient, in units of 1/l*}
+    \cgalParamType{double}
+    \cgalParamDefault{0.01}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_iterations}
+    \cgalParamDescription{MaxIts; 0 runs until converged (at most `maximum_number_of_iterations`)}
+    \cgalParamType{int}
+    \cgalParamDefault{13}
+  \cgalParamNEnd
+  \cgalParamNBegin{maximum_number_of_iterations}
+    \cgalParamDescription{the bound on a round without MaxIts, so that it always ends}
+    \cgalParamType{int}
+    \cgalParamDefault{1000}
+  \cgalParamNEnd
+  \cgalParamNBegin{stall_tolerance}
+    \cgalParamDescription{a round without MaxIts also ends, once its RMS gradient is within 10 times
+      `gradient_tolerance`, when its last 50 iterations lowered the energy by less than this fraction:
+      what is left then is a slow drift of the whole lattice, not its local order}
+    \cgalParamType{double}
+    \cgalParamDefault{3e-4}
+  \cgalParamNEnd
+  \cgalParamNBegin{boundary_distance_ratio}
+    \cgalParamDescription{as for `snap_particles_to_boundary()`}
+    \cgalParamDefault{0.3}
+  \cgalParamNEnd
+  \cgalParamNBegin{free_particles_join_boundary}
+    \cgalParamDescription{as for `snap_particles_to_boundary()`}
+    \cgalParamDefault{true}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{OpenMP threads}
+    \cgalParamType{int}
+    \cgalParamDefault{1}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws std::invalid_argument naming the named parameter that is missing or out of range
 */
 template <typename Domain, typename FrameField, typename Point_3,
           typename NamedParameters = parameters::Default_named_parameters>
-Optimization_result optimize_particles_round(Particle_set_3<Point_3>& ps, const Domain& domain,
-                                             const FrameField& field,
-                                             const NamedParameters& np = parameters::default_values())
+Optimization_result optimize_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
+                                       const NamedParameters& np = parameters::default_values())
 {
-  return optimize_particles_round(ps, domain, field, internal::stage_lattice(np),
-                                  internal::stage_options<Optimization_options>(np, "optimize_particles_round"));
+  return internal::optimize_particles_round(ps, domain, field, internal::stage_lattice(np),
+                                            internal::optimization_options(np, "optimize_particles"));
 }
 
 } // namespace Lattice_mesher_3

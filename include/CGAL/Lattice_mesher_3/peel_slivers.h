@@ -13,6 +13,7 @@
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/check_mesh.h>
 #include <CGAL/Lattice_mesher_3/mesh_quality.h>
+#include <CGAL/Lattice_mesher_3/internal/stage_parameters.h>
 
 #include <algorithm>
 #include <array>
@@ -23,7 +24,9 @@
 namespace CGAL {
 namespace Lattice_mesher_3 {
 
-/// Settings of `peel_boundary_slivers()`.
+namespace internal {
+
+// Settings of peel_boundary_slivers().
 struct Peeling_options
 {
   /// tetrahedra whose smallest dihedral angle (isotropic space, degrees) is below this are peeled
@@ -37,6 +40,21 @@ struct Peeling_options
   /// rounds of peeling: a peeled sliver may expose another
   int max_rounds = 10;
 };
+
+template <typename NamedParameters>
+Peeling_options peeling_options(const NamedParameters& np)
+{
+  Peeling_options o;
+  read_parameter(np, internal_np::peel_angle, o.angle);
+  read_parameter(np, internal_np::flatness_ratio, o.flat_ratio);
+  read_parameter(np, internal_np::sliver_angle, o.sliver_angle);
+  read_parameter(np, internal_np::max_rounds, o.max_rounds);
+  if(!(o.flat_ratio >= 0.) || o.max_rounds < 0)
+    throw std::invalid_argument("peel_boundary_slivers(): flatness_ratio() and max_rounds() must be at least 0");
+  return o;
+}
+
+} // namespace internal
 
 namespace internal {
 
@@ -58,24 +76,12 @@ inline std::vector<std::array<int, 3> > one_tet_faces(const std::vector<std::arr
 
 } // namespace internal
 
-/*!
-\ingroup PkgLatticeMesher3Flips
+namespace internal {
 
-Removes the slivers that lie flat on the boundary: a tetrahedron with two to four faces on the
-boundary (four: alone, where a part of the domain is thinner than the lattice), a smallest dihedral angle below `o.angle` and a smallest height at most `o.flat_ratio`
-times its mean edge (both in the isotropic space of `field`), or whatever its height, below
-`o.sliver_angle`. Such a tetrahedron adds almost no
-volume; what no flip or move of a vertex raises (its vertices held on the surface), removing it
-does, and the boundary moves by its height. Removals that would leave the boundary non-manifold are not made: a round
-removes a set of slivers that share no vertex, and if the mesh is then invalid
-(`check_tetrahedral_mesh()`), tries them one at a time. Vertices that end up in no tetrahedron
-are removed. Returns the number of tetrahedra removed.
-
-\tparam FrameField a model of `FrameField_3`
-*/
+// see peel_boundary_slivers()
 template <typename Point_3, typename FrameField>
 std::size_t peel_boundary_slivers(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field,
-                                  const Peeling_options& o = Peeling_options())
+                                  const Peeling_options& o)
 {
   typedef internal::Triangle_indices Face;
   std::size_t removed = 0;
@@ -149,6 +155,59 @@ std::size_t peel_boundary_slivers(Tetrahedral_mesh_3<Point_3>& mesh, const Frame
     internal::remove_vertices(mesh, unused);
   }
   return removed;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgLatticeMesher3Flips
+
+Removes the slivers that lie flat on the boundary: a tetrahedron with two to four faces on the
+boundary (four: alone, where a part of the domain is thinner than the lattice), a smallest dihedral angle below `peel_angle` and a smallest height at most `flatness_ratio`
+times its mean edge (both in the isotropic space of `field`), or whatever its height, below
+`sliver_angle`. Such a tetrahedron adds almost no
+volume; what no flip or move of a vertex raises (its vertices held on the surface), removing it
+does, and the boundary moves by its height. Removals that would leave the boundary non-manifold are not made: a round
+removes a set of slivers that share no vertex, and if the mesh is then invalid
+(`check_tetrahedral_mesh()`), tries them one at a time. Vertices that end up in no tetrahedron
+are removed.
+
+\tparam FrameField a model of `FrameField_3`
+
+\tparam FrameField a model of `FrameField_3`
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{peel_angle}
+    \cgalParamDescription{tetrahedra whose smallest dihedral angle (isotropic space, degrees) is below this are peeled ...}
+    \cgalParamType{double}
+    \cgalParamDefault{20}
+  \cgalParamNEnd
+  \cgalParamNBegin{flatness_ratio}
+    \cgalParamDescription{... if their smallest height is at most this fraction of their mean edge (isotropic space): they are flat, and the boundary moves by that height when they go ...}
+    \cgalParamType{double}
+    \cgalParamDefault{0.1}
+  \cgalParamNEnd
+  \cgalParamNBegin{sliver_angle}
+    \cgalParamDescription{... and below this angle whatever their height: a sliver that all-fixed vertices hold (the corners of a coarse surface) is worse than the boundary moving by a fraction of an edge}
+    \cgalParamType{double}
+    \cgalParamDefault{10}
+  \cgalParamNEnd
+  \cgalParamNBegin{max_rounds}
+    \cgalParamDescription{rounds of peeling: a peeled sliver may expose another}
+    \cgalParamType{int}
+    \cgalParamDefault{10}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the number of tetrahedra removed
+\throws std::invalid_argument for a named parameter out of range
+*/
+template <typename Point_3, typename FrameField,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t peel_boundary_slivers(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field,
+                                  const NamedParameters& np = parameters::default_values())
+{
+  return internal::peel_boundary_slivers(mesh, field, internal::peeling_options(np));
 }
 
 } // namespace Lattice_mesher_3

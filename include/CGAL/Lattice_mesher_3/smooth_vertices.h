@@ -13,6 +13,7 @@
 #include <CGAL/Lattice_mesher_3/Lattice_3.h>
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/mesh_quality.h>
+#include <CGAL/Lattice_mesher_3/internal/stage_parameters.h>
 
 #include <CGAL/enum.h>
 #include <CGAL/Kernel/global_functions_3.h>
@@ -26,7 +27,9 @@
 namespace CGAL {
 namespace Lattice_mesher_3 {
 
-/// Settings of `smooth_vertices()`.
+namespace internal {
+
+// Settings of smooth_vertices().
 struct Smoothing_options
 {
   /// Vertices of tetrahedra whose smallest dihedral angle (isotropic space, degrees) is below
@@ -62,6 +65,32 @@ struct Smoothing_options
   int threads = 1;
 };
 
+template <typename NamedParameters>
+Smoothing_options smoothing_options(const NamedParameters& np)
+{
+  Smoothing_options o;
+  read_parameter(np, internal_np::edge_length, o.edge_length);
+  if(o.edge_length > 0.) o.lattice = stage_lattice(np);
+  read_parameter(np, internal_np::selection_angle, o.select_angle);
+  read_parameter(np, internal_np::target_angle, o.target_angle);
+  read_parameter(np, internal_np::worst_angle, o.worst_angle);
+  read_parameter(np, internal_np::worst_weight, o.worst_weight);
+  read_parameter(np, internal_np::target_radius_ratio, o.target_radius_ratio);
+  read_parameter(np, internal_np::radius_ratio_weight, o.radius_ratio_weight);
+  read_parameter(np, internal_np::floor_angle, o.floor_angle);
+  read_parameter(np, internal_np::lattice_tolerance, o.lattice_tolerance);
+  read_parameter(np, internal_np::number_of_passes, o.max_passes);
+  read_parameter(np, internal_np::number_of_threads, o.threads);
+  for(double x : { o.edge_length, o.worst_weight, o.radius_ratio_weight, o.lattice_tolerance })
+    if(!(x >= 0.) || !std::isfinite(x))
+      throw std::invalid_argument("smooth_vertices(): edge_length(), worst_weight(), radius_ratio_weight() and lattice_tolerance() must be at least 0 and finite");
+  if(o.max_passes < 0 || o.threads < 1)
+    throw std::invalid_argument("smooth_vertices(): number_of_passes() must be at least 0 and number_of_threads() at least 1");
+  return o;
+}
+
+} // namespace internal
+
 namespace internal {
 
 // The 6 axis and 8 diagonal directions a free vertex tries.
@@ -90,27 +119,12 @@ void pattern_search(Eigen::Vector3d x, const std::vector<Eigen::Vector3d>& direc
 
 } // namespace internal
 
-/*!
-\ingroup PkgLatticeMesher3Flips
+namespace internal {
 
-Moves the vertices of the worst tetrahedra to lower the shortfall of their star's smallest
-dihedral angles (measured in the isotropic space of `field`) below a target: a pattern search with
-steps of 30%, 10% and 3% of the star's mean edge length (lengths in the isotropic space of a
-tetrahedron of the star) over the direction to the star's centroid and the axis and diagonal
-directions: for free vertices the 6 axes and 8 diagonals, for boundary vertices the 8 directions
-of the tangent plane (the surface normal comes from `project_on_surface()`), for sharp-edge
-vertices the 2 of the curve's tangent. The worst tetrahedra are those below `o.select_angle`
-that are not lattice tetrahedra (`Smoothing_options::lattice`). Boundary vertices stay on the
-surface and sharp-edge vertices on the feature curves (each candidate is projected back), fixed
-vertices (corners) do not move. After the first of `max_passes` passes, only vertices sharing a
-tetrahedron with a vertex moved in the previous pass are searched again. A move is kept only if no tetrahedron of the star
-is inverted (exact orientation tests), the shortfall falls and the star's smallest angle does not
-fall below the floor, so the boundary stays on the surface and the mesh stays valid. Needs
-`mesh.vertex_kinds`. Returns the number of moves.
-*/
+// see smooth_vertices()
 template <typename Point_3, typename Domain, typename FrameField>
 std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain, const FrameField& field,
-                            const Smoothing_options& o = Smoothing_options())
+                            const Smoothing_options& o)
 {
   if(mesh.vertex_kinds.size() != mesh.points.size())
     throw std::invalid_argument("smooth_vertices(): the mesh needs one particle kind per vertex");
@@ -311,6 +325,103 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     if(pass_moves == 0) break;
   }
   return moves;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgLatticeMesher3Flips
+
+Moves the vertices of the worst tetrahedra to lower the shortfall of their star's smallest
+dihedral angles (measured in the isotropic space of `field`) below a target: a pattern search with
+steps of 30%, 10% and 3% of the star's mean edge length (lengths in the isotropic space of a
+tetrahedron of the star) over the direction to the star's centroid and the axis and diagonal
+directions: for free vertices the 6 axes and 8 diagonals, for boundary vertices the 8 directions
+of the tangent plane (the surface normal comes from `project_on_surface()`), for sharp-edge
+vertices the 2 of the curve's tangent. The worst tetrahedra are those below `selection_angle`
+that are not lattice tetrahedra (`edge_length`). Boundary vertices stay on the
+surface and sharp-edge vertices on the feature curves (each candidate is projected back), fixed
+vertices (corners) do not move. After the first pass, only vertices sharing a
+tetrahedron with a vertex moved in the previous pass are searched again. A move is kept only if no tetrahedron of the star
+is inverted (exact orientation tests), the shortfall falls and the star's smallest angle does not
+fall below the floor, so the boundary stays on the surface and the mesh stays valid. Needs
+`mesh.vertex_kinds`.
+
+\tparam Domain a model of `LatticeMeshDomain_3`
+\tparam FrameField a model of `FrameField_3`
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{selection_angle}
+    \cgalParamDescription{vertices of tetrahedra whose smallest dihedral angle (isotropic space, degrees) is below this, lattice tetrahedra excepted, are moved; the others stay where the optimization put them}
+    \cgalParamType{double}
+    \cgalParamDefault{55}
+  \cgalParamNEnd
+  \cgalParamNBegin{target_angle}
+    \cgalParamDescription{moves lower the sum over a star of (target_angle - smallest angle)^2 over its tetrahedra below it (about the regular tetrahedron's 70.5, so that every tetrahedron is pulled up) ...}
+    \cgalParamType{double}
+    \cgalParamDefault{70}
+  \cgalParamNEnd
+  \cgalParamNBegin{worst_angle}
+    \cgalParamDescription{... plus `worst_weight` x (worst_angle - smallest angle)^2 below this, so that moves do not trade the worst tetrahedra for the mean ...}
+    \cgalParamType{double}
+    \cgalParamDefault{50}
+  \cgalParamNEnd
+  \cgalParamNBegin{worst_weight}
+    \cgalParamDescription{see `worst_angle`}
+    \cgalParamType{double}
+    \cgalParamDefault{4}
+  \cgalParamNEnd
+  \cgalParamNBegin{target_radius_ratio}
+    \cgalParamDescription{... plus the square of (target_radius_ratio - radius ratio) x `radius_ratio_weight` below this, since angles alone leave tetrahedra with short edges ...}
+    \cgalParamType{double}
+    \cgalParamDefault{0.9}
+  \cgalParamNEnd
+  \cgalParamNBegin{radius_ratio_weight}
+    \cgalParamDescription{degrees per unit of radius ratio, see `target_radius_ratio`}
+    \cgalParamType{double}
+    \cgalParamDefault{50}
+  \cgalParamNEnd
+  \cgalParamNBegin{floor_angle}
+    \cgalParamDescription{... and never lower the star's smallest angle below this (or its current value if lower)}
+    \cgalParamType{double}
+    \cgalParamDefault{40}
+  \cgalParamNEnd
+  \cgalParamNBegin{edge_length}
+    \cgalParamDescription{l*: with it, a tetrahedron whose six edges (isotropic space) all lie within `lattice_tolerance` x l* of a vector of `lattice` (a one-ring offset or the sum of two) and whose smallest angle is at least `floor_angle` is a lattice tetrahedron, and is not selected}
+    \cgalParamType{double}
+    \cgalParamDefault{0: every tetrahedron below `selection_angle` is selected}
+  \cgalParamNEnd
+  \cgalParamNBegin{lattice}
+    \cgalParamDescription{the lattice the vertices follow}
+    \cgalParamType{`Lattice_type`}
+    \cgalParamDefault{`Lattice_type::BCC`}
+  \cgalParamNEnd
+  \cgalParamNBegin{lattice_tolerance}
+    \cgalParamDescription{see `edge_length`}
+    \cgalParamType{double}
+    \cgalParamDefault{0.1}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_passes}
+    \cgalParamDescription{passes; after the first, only vertices sharing a tetrahedron with a vertex moved in the previous pass are searched again}
+    \cgalParamType{int}
+    \cgalParamDefault{3}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{OpenMP threads}
+    \cgalParamType{int}
+    \cgalParamDefault{1}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the number of moves
+\throws std::invalid_argument without a particle kind per vertex, or for a named parameter out of range
+*/
+template <typename Point_3, typename Domain, typename FrameField,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain, const FrameField& field,
+                            const NamedParameters& np = parameters::default_values())
+{
+  return internal::smooth_vertices(mesh, domain, field, internal::smoothing_options(np));
 }
 
 } // namespace Lattice_mesher_3

@@ -34,7 +34,9 @@
 namespace CGAL {
 namespace Lattice_mesher_3 {
 
-/// Settings of `tetrahedralize_particles()`.
+namespace internal {
+
+// Settings of tetrahedralize_particles().
 struct Tetrahedralization_options
 {
   /// A cell whose vertices all lie on the boundary is kept only if its centroid is at least this
@@ -52,17 +54,32 @@ struct Tetrahedralization_options
   int threads = 1;
 };
 
+template <typename NamedParameters>
+Tetrahedralization_options tetrahedralization_options(const NamedParameters& np)
+{
+  Tetrahedralization_options o;
+  read_parameter(np, internal_np::flatness_ratio, o.flat_cell_ratio);
+  read_parameter(np, internal_np::wedge_angle, o.wedge_angle);
+  read_parameter(np, internal_np::edge_length, o.edge_length);
+  read_parameter(np, internal_np::number_of_threads, o.threads);
+  if(!(o.flat_cell_ratio >= 0.) || !(o.wedge_angle >= 0.) || !(o.edge_length >= 0.) || !std::isfinite(o.edge_length) || o.threads < 1)
+    throw std::invalid_argument("tetrahedralize_particles(): flatness_ratio(), wedge_angle() and edge_length() must be at least 0 and number_of_threads() at least 1");
+  return o;
+}
+
+} // namespace internal
+
 namespace internal {
 
 // The Delaunay tetrahedralization of the particles placed at y, restricted to the domain and
 // repaired (see tetrahedralize_particles()); every geometric test but the Delaunay one is on
 // the particles' own positions.
-template <typename Domain, typename FrameField, typename Point_3>
+template <typename Domain, typename FrameField, typename Point_3, typename GT>
 Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& ps, const std::vector<Vec3>& y,
                                                 const Domain& domain, const FrameField& field,
-                                                const Tetrahedralization_options& o)
+                                                const Tetrahedralization_options& o, const GT& gt)
 {
-  typedef typename Domain::Geom_traits K;
+  typedef GT K;
   typedef CGAL::Triangulation_vertex_base_with_info_3<int, K> Vb;
   typedef CGAL::Triangulation_cell_base_with_info_3<char, K> Cb;
   typedef CGAL::Triangulation_data_structure_3<Vb, Cb> Tds;
@@ -72,7 +89,7 @@ Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& p
 
   std::vector<std::pair<typename K::Point_3, int> > input(ps.size());
   for(std::size_t i = 0; i < ps.size(); ++i) input[i] = { typename K::Point_3(y[i][0], y[i][1], y[i][2]), int(i) };
-  Dt dt(input.begin(), input.end());
+  Dt dt(input.begin(), input.end(), gt);
   if(dt.dimension() < 3)
     throw std::invalid_argument("tetrahedralize_particles(): the particles are coplanar");
   auto P = [&](Vertex_handle v) -> const Point_3& { return ps.points[v->info()]; };
@@ -264,34 +281,13 @@ std::size_t untangle_by_moves(Tetrahedral_mesh_3<Point_3>& mesh)
 
 } // namespace internal
 
-/*!
-\ingroup PkgLatticeMesher3Tetrahedralization
+namespace internal {
 
-Connects particles into a tetrahedral mesh: the Delaunay tetrahedralization of all particles
-(CGAL `Delaunay_triangulation_3`, exact predicates) in the isotropic space of the field,
-restricted to the domain by keeping the cells whose centroid is inside it; cells whose four
-vertices are boundary particles and whose centroid lies within `flat_cell_ratio` x their mean
-edge length of the boundary are dropped (they would be slivers lying on the surface), but for
-the wedges along sharp edges (`wedge_angle`). The boundary is then repaired into a closed
-2-manifold: cells are removed around non-manifold edges and vertices until none remains, the
-kept wedges first. Particles that end up in no tetrahedron are not output. The
-tetrahedra are positively oriented and `boundary_faces` are oriented outward.
-
-The isotropic space is where the field's metric B^T B is Euclidean: the particles themselves
-under a cross field or a constant frame, and under a varying stretch the least-squares
-embedding of their isotropic neighbour vectors (exact when the metric is flat, as fig8's).
-Should that embedding fold a kept cell over in the physical space (a strongly curved metric),
-the Euclidean Delaunay tetrahedralization is used instead, and the flips must then do all the
-work.
-
-Delaunay rather than TetGen's constrained tetrahedralization: the boundary particles lie on
-the surface and the interior ones at least 0.3 l* inside, so the restricted Delaunay complex
-already conforms to the boundary; CGAL's triangulation is exact and robust on degenerate
-(cospherical lattice) input, on which TetGen 1.5 may crash, and it keeps the package GPL.
-*/
-template <typename Domain, typename FrameField, typename Point_3>
+// see tetrahedralize_particles()
+template <typename Domain, typename FrameField, typename Point_3, typename GT>
 Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_3>& ps, const Domain& domain,
-                                                     const FrameField& field, const Tetrahedralization_options& o)
+                                                     const FrameField& field, const Tetrahedralization_options& o,
+                                                     const GT& gt)
 {
   typedef typename Domain::Geom_traits K;
   if(ps.size() < 4)
@@ -304,7 +300,7 @@ Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_
   }
   bool uniform = true;
   const std::vector<internal::Vec3> y = internal::isotropic_embedding<K>(x, field, 1.3 * l, o.threads, uniform);
-  if(uniform) return internal::restricted_delaunay(ps, y, domain, field, o);
+  if(uniform) return internal::restricted_delaunay(ps, y, domain, field, o, gt);
   // A cell flat in the embedding may come out inverted: flips remove it, else a small move of a
   // free vertex. A few that resist both (slivers of nearly collinear particles along fig9's
   // circles) usually do not survive a slight change of the embedding: 5%, then 15% of the
@@ -322,14 +318,14 @@ Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_
   for(double mix : { 0., .05, .15 }) {
     std::vector<internal::Vec3> z(y);
     for(std::size_t i = 0; i < z.size(); ++i) z[i] = (1. - mix) * y[i] + mix * scale * x[i];
-    Tetrahedral_mesh_3<Point_3> mesh = internal::restricted_delaunay(ps, z, domain, field, o);
+    Tetrahedral_mesh_3<Point_3> mesh = internal::restricted_delaunay(ps, z, domain, field, o, gt);
     const std::size_t before = folded(mesh);
     std::size_t after = before;
     if(before > 0) {
-      Flip_options untangle;
+      internal::Flip_options untangle;
       untangle.target_angle = 0.;
       untangle.max_ring_size = 12;   // a handful of edges: the largest rings are affordable
-      flip_tetrahedra(mesh, field, untangle);
+      internal::flip_tetrahedra(mesh, field, untangle);
       after = folded(mesh);
       if(after > 0) after = internal::untangle_by_moves(mesh);
     }
@@ -339,24 +335,82 @@ Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_
 #endif
     if(after == 0) return mesh;
   }
-  Tetrahedral_mesh_3<Point_3> mesh = internal::restricted_delaunay(ps, x, domain, field, o);
+  Tetrahedral_mesh_3<Point_3> mesh = internal::restricted_delaunay(ps, x, domain, field, o, gt);
   return mesh;
 }
 
-/// \ingroup PkgLatticeMesher3Tetrahedralization
-/// `tetrahedralize_particles()` with the named parameters `edge_length` (default 0: estimated)
-/// and `number_of_threads` (default 1).
+} // namespace internal
+
+/*!
+\ingroup PkgLatticeMesher3Tetrahedralization
+
+Connects particles into a tetrahedral mesh: the Delaunay tetrahedralization of all particles
+(CGAL `Delaunay_triangulation_3`, exact predicates) in the isotropic space of the field,
+restricted to the domain by keeping the cells whose centroid is inside it; cells whose four
+vertices are boundary particles and whose centroid lies within `flatness_ratio` x their mean
+edge length of the boundary are dropped (they would be slivers lying on the surface), but for
+the wedges along sharp edges (`wedge_angle`). The boundary is then repaired into a closed
+2-manifold: cells are removed around non-manifold edges and vertices until none remains, the
+kept wedges first. Particles that end up in no tetrahedron are not output. The
+tetrahedra are positively oriented and `boundary_faces` are oriented outward.
+
+The isotropic space is where the field's metric B^T B is Euclidean: the particles themselves
+under a cross field or a constant frame, and under a varying stretch the least-squares
+embedding of their isotropic neighbour vectors (exact when the metric is flat, as fig8's).
+Should that embedding fold a kept cell over in the physical space (a strongly curved metric),
+the Euclidean Delaunay tetrahedralization is used instead, and the flips must then do all the
+work.
+
+Delaunay rather than TetGen's constrained tetrahedralization: the boundary particles lie on
+the surface and the interior ones at least 0.3 l* inside, so the restricted Delaunay complex
+already conforms to the boundary; CGAL's triangulation is exact and robust on degenerate
+(cospherical lattice) input, on which TetGen 1.5 may crash, and it keeps the package GPL.
+
+\tparam Domain a model of `LatticeMeshDomain_3`
+\tparam FrameField a model of `FrameField_3`
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{flatness_ratio}
+    \cgalParamDescription{a cell whose four vertices lie on the boundary is dropped if its centroid is less than this fraction of its mean edge length inside}
+    \cgalParamType{double}
+    \cgalParamDefault{0.1}
+  \cgalParamNEnd
+  \cgalParamNBegin{wedge_angle}
+    \cgalParamDescription{... unless it is a wedge along a sharp edge: two of its vertices on feature curves and its smallest dihedral angle (isotropic space, degrees) at least this}
+    \cgalParamType{double}
+    \cgalParamDefault{20}
+  \cgalParamNEnd
+  \cgalParamNBegin{edge_length}
+    \cgalParamDescription{l*, which sets the neighbourhood (1.3 l*) of the isotropic embedding under a varying stretch}
+    \cgalParamType{double}
+    \cgalParamDefault{0: estimated from the number of particles and the isotropic volume}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{OpenMP threads}
+    \cgalParamType{int}
+    \cgalParamDefault{1}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{the traits object whose predicates decide the Delaunay tetrahedralization}
+    \cgalParamType{a model of `DelaunayTriangulationTraits_3` with the point type of `Domain::Geom_traits`}
+    \cgalParamDefault{`Domain::Geom_traits()`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws std::invalid_argument with fewer than 4 particles, or a named parameter out of range
+*/
 template <typename Domain, typename FrameField, typename Point_3,
           typename NamedParameters = parameters::Default_named_parameters>
 Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_3>& ps, const Domain& domain,
                                                      const FrameField& field,
                                                      const NamedParameters& np = parameters::default_values())
 {
-  Tetrahedralization_options o;
-  o.edge_length = parameters::choose_parameter(parameters::get_parameter(np, internal_np::edge_length), 0.);
-  o.threads = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_threads), 1);
-  return tetrahedralize_particles(ps, domain, field, o);
+  typedef typename internal_np::Lookup_named_param_def<internal_np::geom_traits_t, NamedParameters,
+                                                       typename Domain::Geom_traits>::type GT;
+  return internal::tetrahedralize_particles(ps, domain, field, internal::tetrahedralization_options(np),
+                                            parameters::choose_parameter<GT>(parameters::get_parameter(np, internal_np::geom_traits)));
 }
+
 
 } // namespace Lattice_mesher_3
 } // namespace CGAL

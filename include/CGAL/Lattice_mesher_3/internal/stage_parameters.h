@@ -24,35 +24,36 @@
 namespace CGAL {
 namespace Lattice_mesher_3 {
 
-struct Optimization_options;
-
 namespace internal {
 
-// The settings shared by the stage functions, read from named parameters with the paper's
-// defaults; `edge_length` is required.
-template <typename Options, typename NamedParameters>
-Options stage_options(const NamedParameters& np, const char* stage)
+// `value` becomes the named parameter `tag` of `np` if it is given, and keeps its default otherwise.
+template <typename NamedParameters, typename Tag, typename T>
+void read_parameter(const NamedParameters& np, Tag tag, T& value)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  Options o;
-  o.edge_length = choose_parameter(get_parameter(np, internal_np::edge_length), 0.);
-  if(!(o.edge_length > 0.) || !std::isfinite(o.edge_length))
-    throw std::invalid_argument(std::string(stage) + "(): the named parameter edge_length() must be positive and finite");
-  o.neighbor_radius = choose_parameter(get_parameter(np, internal_np::neighbor_radius_ratio), o.neighbor_radius);
-  o.gradient_tolerance = choose_parameter(get_parameter(np, internal_np::gradient_tolerance), o.gradient_tolerance);
-  o.max_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), o.max_iterations);
-  o.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), o.threads);
-  return o;
+  value = parameters::choose_parameter(parameters::get_parameter(np, tag), value);
 }
 
+// The named parameter edge_length() of a stage function that requires it.
+template <typename NamedParameters>
+double required_edge_length(const NamedParameters& np, const char* stage)
+{
+  const double l = parameters::choose_parameter(parameters::get_parameter(np, internal_np::edge_length), 0.);
+  if(!(l > 0.) || !std::isfinite(l))
+    throw std::invalid_argument(std::string(stage) + "(): the named parameter edge_length() must be positive and finite");
+  return l;
+}
+
+inline Lattice_3 as_lattice(Lattice_type type) { return make_lattice(type); }
+inline const Lattice_3& as_lattice(const Lattice_3& lattice) { return lattice; }
+
+// The named parameter lattice(), a `Lattice_type` or a `Lattice_3` (BCC if absent), with the
+// named parameter sigma_ratio() if given.
 template <typename NamedParameters>
 Lattice_3 stage_lattice(const NamedParameters& np)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  Lattice_3 lattice = make_lattice(choose_parameter(get_parameter(np, internal_np::lattice_param), Lattice_type::BCC));
-  lattice.sigma_ratio = choose_parameter(get_parameter(np, internal_np::sigma_ratio), lattice.sigma_ratio);
+  Lattice_3 lattice = as_lattice(parameters::choose_parameter(parameters::get_parameter(np, internal_np::lattice_param),
+                                                              Lattice_type::BCC));
+  read_parameter(np, internal_np::sigma_ratio, lattice.sigma_ratio);
   return lattice;
 }
 
