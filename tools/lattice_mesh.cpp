@@ -9,6 +9,7 @@
 // lattice, prints progress and the quality table, and writes Medit, VTU and JSON statistics.
 
 #include "command_line.h"
+#include "render_png.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Lattice_particle_mesher_3.h>
@@ -62,7 +63,7 @@ static const char* usage =
   "                    [--quiet | --verbose]\n"
   "                    [--size-field FILE] [--cells-across C] [--surface-tolerance E]\n"
   "                    [--grading G] [--min-edge-length H]\n"
-  "                    -o OUT.mesh|OUT.vtu|OUT.msh [-o ...] [--stats OUT.json]\n"
+  "                    -o OUT.mesh|OUT.vtu|OUT.msh [-o ...] [--stats OUT.json] [--png OUT.png]\n"
   "       lattice-mesh [INPUT | --domain ...] [--field ...] --write-field OUT.txt --field-spacing H\n"
   "  INPUT            closed triangle surface (OFF, OBJ, STL, PLY)\n"
   "  --domain         built-in shape: cube [0.1,1.1]^3, cube11 [1,11]^3, unit sphere,\n"
@@ -108,12 +109,16 @@ static const char* usage =
   "                   (from the start of the meshing) and mesh the particles as they are\n"
   "  --quiet          print only warnings and errors\n"
   "  --verbose        print every optimization round and every stage of the mesh improvement\n"
-  "                   with its time (default: a progress bar on a terminal, the rounds otherwise)\n";
+  "                   with its time (default: a progress bar on a terminal, the rounds otherwise)\n"
+  "  --png            a picture (PNG, 1600x800; needs VTK): the boundary, and the tetrahedra on one\n"
+  "                   side of the plane z = the bounding box's centre, coloured by theta_min, those\n"
+  "                   below 40 degrees red; without -o, the only output\n";
 
 struct Options
 {
   std::string input, domain, lattice = "bcc", field = "identity", field_data, write_field, stats, size_field;
   std::vector<std::string> outputs;
+  std::string png;   // --png
   double edge_length = 0., vertices = 0., feature_angle = 60., field_spacing = 0.;
   bool has_edge_length = false, has_vertices = false;
   double cells_across = LM::internal::Shape_sizing_parameters().cells_across;
@@ -170,6 +175,7 @@ static Options parse(int argc, char** argv)
     else if(a == "--max-rounds") o.max_rounds = int(args.integer(a, -1, std::numeric_limits<int>::max()));
     else if(a == "-o" || a == "--output") o.outputs.push_back(args.value(a));
     else if(a == "--stats") o.stats = args.value(a);
+    else if(a == "--png") o.png = args.value(a);
     else if(a == "--quiet") o.quiet = true;
     else if(a == "--verbose") o.verbose = true;
     else if(a == "--time-limit") o.time_limit = args.number(a);
@@ -193,7 +199,9 @@ static Options parse(int argc, char** argv)
     if(!(o.field_spacing > 0.)) throw std::invalid_argument("--field-spacing must be positive");
     return o;   // no mesh: the other options do not apply
   }
-  if(o.outputs.empty()) throw std::invalid_argument("an output file is required: -o OUT.mesh (or .vtu, .msh)");
+  if(o.outputs.empty() && o.png.empty())
+    throw std::invalid_argument("an output file is required: -o OUT.mesh (or .vtu, .msh) or --png OUT.png");
+  if(!o.png.empty()) render_png::check_available();   // built with VTK
   for(const std::string& out : o.outputs) output_format(out);   // an unknown extension fails before any work
   if(o.has_edge_length == o.has_vertices)
     throw std::invalid_argument("give exactly one of --edge-length L and --vertices N");
@@ -363,6 +371,12 @@ static int run(const Domain& domain, const Field_choice& choice, const Options& 
   q.seconds.total = q.seconds.optimize + q.seconds.mesh;
   if(!o.quiet) LM::print_quality_table(std::cout, q);
 
+  // the quality in the isotropic space, per tetrahedron (.vtu and --png), computed once
+  std::vector<LM::Tetrahedron_quality_3> tq;
+  auto tetrahedra_quality = [&]() -> const std::vector<LM::Tetrahedron_quality_3>& {
+    if(tq.size() != mesh.tets.size()) tq = LM::compute_tetrahedra_quality(mesh, field);
+    return tq;
+  };
   auto open = [](const std::string& name) {
     std::ofstream os(name);
     if(!os) throw std::runtime_error("cannot write '" + name + "'");
@@ -374,10 +388,8 @@ static int run(const Domain& domain, const Field_choice& choice, const Options& 
     case Format::MEDIT: LM::write_medit(os, mesh); break;
     case Format::GMSH: LM::write_gmsh(os, mesh); break;
     case Format::VTU: {
-      // the quality in the isotropic space, per tetrahedron
-      const std::vector<LM::Tetrahedron_quality_3> tq = LM::compute_tetrahedra_quality(mesh, field);
       std::map<std::string, std::vector<double> > cells;
-      for(const LM::Tetrahedron_quality_3& t : tq) {
+      for(const LM::Tetrahedron_quality_3& t : tetrahedra_quality()) {
         cells["theta_min"].push_back(t.theta_min);
         cells["rho"].push_back(t.rho);
         cells["kappa"].push_back(t.kappa);
@@ -388,6 +400,13 @@ static int run(const Domain& domain, const Field_choice& choice, const Options& 
     }
   }
   if(!o.stats.empty()) { std::ofstream os = open(o.stats); LM::write_quality_json(os, q); }
+  if(!o.png.empty()) {   // drawn by VTK in render_png.cpp
+    std::vector<std::array<double, 3> > points;
+    for(const Point_3& p : mesh.points) points.push_back({ p.x(), p.y(), p.z() });
+    std::vector<double> theta_min;
+    for(const LM::Tetrahedron_quality_3& t : tetrahedra_quality()) theta_min.push_back(t.theta_min);
+    render_png::write_png(o.png, points, mesh.tets, theta_min);
+  }
   if(!validity.valid()) {
     std::cerr << "lattice-mesh: error: the output mesh is not valid:\n" << validity.message << "\n";
     return 2;
@@ -401,7 +420,7 @@ int main(int argc, char** argv)
     const Options o = parse(argc, argv);
     // every output can be written, before the work
     std::vector<std::string> files = o.outputs;
-    for(const std::string& f : { o.stats, o.write_field }) if(!f.empty()) files.push_back(f);
+    for(const std::string& f : { o.stats, o.write_field, o.png }) if(!f.empty()) files.push_back(f);
     for(const std::string& f : files)
       if(!std::ofstream(f, std::ios::app)) throw std::runtime_error("cannot write '" + f + "'");
     const Field_choice field = make_field(o);
