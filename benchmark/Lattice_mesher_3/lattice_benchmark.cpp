@@ -360,12 +360,14 @@ static Run mesh_with_tetgen(const Input& in, double max_volume)
 // growing sphere cavities on the tetrahedra of quality below Mesh.OptimizeThreshold, 0.3 by
 // default: Gmsh 4.8 runs its other optimizers after HXT only when asked in the script). One size
 // everywhere (Mesh.MeshSizeMin = Mesh.MeshSizeMax = h, no size from curvature), one thread (-nt 1).
-static std::string gmsh_script(double h)
+// `reparam_max_triangles` > 0 splits the patches further, to at most that many triangles (Gmsh's
+// default is 250000: patches are split only where their topology asks for it).
+static std::string gmsh_script(double h, int reparam_max_triangles)
 {
   std::ostringstream geo;
-  geo << std::setprecision(17)
-      << "Merge \"surface.msh\";\n"
-      << "ClassifySurfaces{" << feature_angle << " * Pi / 180, 1, 1, Pi};\n"
+  geo << std::setprecision(17) << "Merge \"surface.msh\";\n";
+  if(reparam_max_triangles > 0) geo << "Mesh.ReparamMaxTriangles = " << reparam_max_triangles << ";\n";
+  geo << "ClassifySurfaces{" << feature_angle << " * Pi / 180, 1, 1, Pi};\n"
       << "CreateGeometry;\n"
       << "Surface Loop(1) = Surface{:};\n"
       << "Volume(1) = {1};\n"
@@ -456,20 +458,36 @@ static std::string last_lines(const std::string& text, int n)
   return text.substr(start);
 }
 
+// Smaller patches for a surface whose classified patches Gmsh cannot parametrize at its defaults
+// (couplingdown: "Wrong topology of boundary mesh for parametrization", then HXT fails; 3000, 2000
+// and 1000 triangles fail too).
+static const int gmsh_fallback_reparam_max_triangles = 500;
+
 static Run mesh_with_gmsh(const Input& in, double h)
 {
   const char* program = std::getenv("GMSH");
   const std::string gmsh = program && *program ? program : "gmsh";
   const Temporary_directory dir;
   write_file((dir.path / "surface.msh").string(), [&](std::ostream& os) { write_gmsh_surface(os, in.surface); });
-  write_file((dir.path / "mesh.geo").string(), [&](std::ostream& os) { os << gmsh_script(h); });
 
+  int reparam_max_triangles = 0;   // Gmsh's default
   rusage usage;
-  const auto start = std::chrono::steady_clock::now();
-  const int status = run_program({ gmsh, "mesh.geo", "-3", "-nt", "1", "-format", "mesh", "-o", "tets.mesh" },
-                                 dir.path, dir.path / "gmsh.log", usage);
-  const double process_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::string log = read_text(dir.path / "gmsh.log");
+  int status = 0;
+  double process_seconds = 0.;
+  std::string log;
+  for(;;) {
+    write_file((dir.path / "mesh.geo").string(), [&](std::ostream& os) { os << gmsh_script(h, reparam_max_triangles); });
+    const auto start = std::chrono::steady_clock::now();
+    status = run_program({ gmsh, "mesh.geo", "-3", "-nt", "1", "-format", "mesh", "-o", "tets.mesh" }, dir.path,
+                         dir.path / "gmsh.log", usage);
+    process_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    log = read_text(dir.path / "gmsh.log");
+    if(reparam_max_triangles != 0 || log.find("Wrong topology of boundary mesh for parametrization") == std::string::npos)
+      break;
+    reparam_max_triangles = gmsh_fallback_reparam_max_triangles;
+    std::cout << "  gmsh cannot parametrize a patch (Wrong topology of boundary mesh for parametrization): again "
+                 "with Mesh.ReparamMaxTriangles = " << reparam_max_triangles << std::endl;
+  }
   if(!WIFEXITED(status) || WEXITSTATUS(status) != 0 || log.find("Error   :") != std::string::npos)
     throw std::runtime_error(gmsh + " failed (" +
                              (WIFSIGNALED(status) ? std::string("signal ") + strsignal(WTERMSIG(status))
@@ -497,6 +515,7 @@ static Run mesh_with_gmsh(const Input& in, double h)
   details << std::setprecision(6) << "\"gmsh_wall_seconds\": {\"mesh_1d\": " << stage_seconds[0]
           << ", \"mesh_2d\": " << stage_seconds[1] << ", \"mesh_3d\": " << stage_seconds[2]
           << ", \"process\": " << process_seconds << "}";
+  if(reparam_max_triangles > 0) details << ", \"gmsh_reparam_max_triangles\": " << reparam_max_triangles;
   run.details = details.str();
   std::cout << "  gmsh h = " << h << ": meshing 1D " << stage_seconds[0] << " s, 2D " << stage_seconds[1] << " s, 3D "
             << stage_seconds[2] << " s (Gmsh's wall times), the whole process " << process_seconds << " s" << std::endl;
