@@ -7,7 +7,8 @@
 //
 // lattice-benchmark: meshes one closed surface with one method (ours or a baseline) at about N
 // vertices and measures the result with the package's quality function, plus wall time and
-// peak memory. One method per run of the program: the peak RSS is that method's.
+// peak memory. One method per run of the program: the peak RSS is that method's. Gmsh runs as its
+// command-line program (Debian ships no libgmsh-dev headers), in a process of its own.
 
 #include "../../tools/command_line.h"
 
@@ -30,6 +31,7 @@
 #include <tetgen.h>
 #endif
 
+#include <fcntl.h>
 #include <malloc.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -42,10 +44,12 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -78,13 +82,16 @@ static const char* usage =
   "  --method      bcc, fcc: ours; gaussian: Particle2013 (hole-less kernel, fixed count);\n"
   "                cvt, odt: CGAL Mesh_3 with Lloyd or ODT, no perturbation, no exudation;\n"
   "                cvt-pe, odt-pe: the same followed by CGAL's default perturbation and exudation;\n"
-  "                tetgen: TetGen -pq with a maximum volume\n"
+  "                tetgen: TetGen -pq with a maximum volume;\n"
+  "                gmsh: Gmsh (the gmsh program, or $GMSH) remeshing the surface at one size with\n"
+  "                its 60-degree features, then HXT with its optimizer (Mesh.Optimize 1), 1 thread\n"
   "  --vertices    the size parameter of the method (ours: the requested count, Mesh_3: one cell,\n"
-  "                facet and edge size, TetGen: the maximum volume) is tuned by secant steps on\n"
-  "                log N until the mesh has N vertices within 5% (at most 6 attempts, each in a\n"
-  "                child process; the last one reruns the closest); only the final run is timed\n"
+  "                facet and edge size, TetGen: the maximum volume, Gmsh: Mesh.MeshSizeMin and\n"
+  "                Max) is tuned by secant steps on log N until the mesh has N vertices within 5%\n"
+  "                (at most 6 attempts, each in a child process; the last one reruns the\n"
+  "                closest); only the final run is timed (Gmsh: its 1D, 2D and 3D meshing)\n"
   "  --no-tuning   one run with the method's own estimate of the size for N\n"
-  "  --threads     OpenMP threads of ours (Mesh_3 and TetGen run sequentially)\n"
+  "  --threads     OpenMP threads of ours (Mesh_3, TetGen and Gmsh run sequentially)\n"
   "  --seed        random start of ours (the baselines are deterministic)\n"
   "  --stats       quality (measured with the identity field; epsilon against the BCC one-ring\n"
   "                for every method), seconds, peak_rss_mb and the tuning attempts, as JSON\n"
@@ -99,7 +106,7 @@ struct Options
   bool tune = true;
 };
 
-enum class Family { LATTICE, MESH_3, TETGEN };
+enum class Family { LATTICE, MESH_3, TETGEN, GMSH };
 
 struct Method
 {
@@ -113,7 +120,7 @@ struct Method
 static Method method_from_name(const std::string& name)
 {
   typedef LM::Lattice_type L;
-  static const std::array<Method, 8> methods = { {
+  static const std::array<Method, 9> methods = { {
     { "bcc", Family::LATTICE, L::BCC, false, false },
     { "fcc", Family::LATTICE, L::FCC, false, false },
     { "gaussian", Family::LATTICE, L::GAUSSIAN, false, false },
@@ -121,7 +128,8 @@ static Method method_from_name(const std::string& name)
     { "odt", Family::MESH_3, L::BCC, false, false },
     { "cvt-pe", Family::MESH_3, L::BCC, true, true },
     { "odt-pe", Family::MESH_3, L::BCC, false, true },
-    { "tetgen", Family::TETGEN, L::BCC, false, false } } };
+    { "tetgen", Family::TETGEN, L::BCC, false, false },
+    { "gmsh", Family::GMSH, L::BCC, false, false } } };
   for(const Method& m : methods) {
     if(m.name != name) continue;
 #ifndef CGAL_LATTICE_MESHER_3_USE_TETGEN
@@ -131,7 +139,7 @@ static Method method_from_name(const std::string& name)
     return m;
   }
   throw std::invalid_argument("unknown method '" + name + "' (expected bcc, fcc, gaussian, cvt, odt, "
-                              "cvt-pe, odt-pe or tetgen)");
+                              "cvt-pe, odt-pe, tetgen or gmsh)");
 }
 
 // The parameter tuned to hit the vertex count, and the exponent of the count in it.
@@ -147,6 +155,7 @@ static Size_parameter size_parameter(Family f)
     case Family::LATTICE: return { "requested_vertices", 1. };
     case Family::MESH_3: return { "cell_size", -3. };
     case Family::TETGEN: return { "max_volume", -1. };
+    case Family::GMSH: return { "mesh_size", -3. };
   }
   throw std::logic_error("size_parameter(): unknown family");
 }
@@ -161,13 +170,14 @@ struct Input
 
 // First guesses, which the tuning corrects: on fandisk at a few thousand vertices, Mesh_3 gives
 // about 2 V / s^3 vertices for the size s (as BCC for its lattice edge), TetGen about V / a for
-// the volume bound a.
+// the volume bound a, Gmsh about V / h^3 for the mesh size h.
 static double initial_size(Family f, const Input& in, double n)
 {
   switch(f) {
     case Family::LATTICE: return n;
     case Family::MESH_3: return std::cbrt(2. * in.volume / n);
     case Family::TETGEN: return in.volume / n;
+    case Family::GMSH: return std::cbrt(in.volume / n);
   }
   throw std::logic_error("initial_size(): unknown family");
 }
@@ -177,6 +187,7 @@ struct Run
   Tet_mesh mesh;
   double seconds = 0.;       // wall time of the meshing call
   double peak_rss_mb = 0.;   // of the process, when the meshing call returned
+  std::string details;       // more JSON keys ("key": value, ...), or empty
 };
 
 static double peak_rss_mb()
@@ -195,6 +206,16 @@ static auto timed(Run& run, const Mesher& mesher)
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.peak_rss_mb = peak_rss_mb();
   return result;
+}
+
+template <typename Writer>
+static void write_file(const std::string& name, const Writer& writer)
+{
+  if(name.empty()) return;
+  std::ofstream os(name);
+  if(!os) throw std::runtime_error("cannot write '" + name + "'");
+  writer(os);
+  if(!os) throw std::runtime_error("writing '" + name + "' failed");
 }
 
 // Every method's output in our arrays, the same way: points no tetrahedron uses are dropped, every
@@ -332,6 +353,175 @@ static Run mesh_with_tetgen(const Input& in, double max_volume)
 }
 #endif
 
+// Gmsh as its user meshes a triangulated surface with it: the surface merged as a discrete mesh,
+// ClassifySurfaces with the same 60-degree features as ours (curves and parametrizable patches)
+// and CreateGeometry, so that Gmsh remeshes curves and surfaces at the size h (Frontal-Delaunay)
+// before HXT fills the volume; Mesh.Optimize 1 is HXT's own optimizer (smoothing, edge removal,
+// growing sphere cavities on the tetrahedra of quality below Mesh.OptimizeThreshold, 0.3 by
+// default: Gmsh 4.8 runs its other optimizers after HXT only when asked in the script). One size
+// everywhere (Mesh.MeshSizeMin = Mesh.MeshSizeMax = h, no size from curvature), one thread (-nt 1).
+// `reparam_max_triangles` > 0 splits the patches further, to at most that many triangles (Gmsh's
+// default is 250000: patches are split only where their topology asks for it).
+static std::string gmsh_script(double h, int reparam_max_triangles)
+{
+  std::ostringstream geo;
+  geo << std::setprecision(17) << "Merge \"surface.msh\";\n";
+  if(reparam_max_triangles > 0) geo << "Mesh.ReparamMaxTriangles = " << reparam_max_triangles << ";\n";
+  geo << "ClassifySurfaces{" << feature_angle << " * Pi / 180, 1, 1, Pi};\n"
+      << "CreateGeometry;\n"
+      << "Surface Loop(1) = Surface{:};\n"
+      << "Volume(1) = {1};\n"
+      << "Mesh.Algorithm3D = 10;\n"
+      << "Mesh.Optimize = 1;\n"
+      << "Mesh.MeshSizeFromCurvature = 0;\n"
+      << "Mesh.MeshSizeMin = " << h << ";\n"
+      << "Mesh.MeshSizeMax = " << h << ";\n";
+  return geo.str();
+}
+
+// The surface as a Gmsh 2.2 mesh of triangles, with the coordinates as they are (STL would round
+// them to floats).
+static void write_gmsh_surface(std::ostream& os, const Surface& surface)
+{
+  os << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" << surface.number_of_vertices() << "\n"
+     << std::setprecision(17);
+  for(Surface::Vertex_index v : surface.vertices()) {
+    const Point_3& p = surface.point(v);
+    os << v.idx() + 1 << " " << p.x() << " " << p.y() << " " << p.z() << "\n";
+  }
+  os << "$EndNodes\n$Elements\n" << surface.number_of_faces() << "\n";
+  for(Surface::Face_index f : surface.faces()) {
+    os << f.idx() + 1 << " 2 2 1 1";   // triangle, tags: physical 1, elementary 1
+    for(Surface::Vertex_index v : CGAL::vertices_around_face(surface.halfedge(f), surface)) os << " " << v.idx() + 1;
+    os << "\n";
+  }
+  os << "$EndElements\n";
+}
+
+// A directory of its own for Gmsh's files, removed with everything in it.
+struct Temporary_directory
+{
+  std::filesystem::path path;
+  Temporary_directory()
+  {
+    std::string name = (std::filesystem::temp_directory_path() / "lattice-benchmark-gmsh-XXXXXX").string();
+    if(!mkdtemp(&name[0])) throw std::runtime_error(std::string("mkdtemp() failed: ") + std::strerror(errno));
+    path = name;
+  }
+  ~Temporary_directory()
+  {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+  Temporary_directory(const Temporary_directory&) = delete;
+  Temporary_directory& operator=(const Temporary_directory&) = delete;
+};
+
+// Runs `argv` in `directory` with its output to `log`; returns its exit status and resource usage.
+static int run_program(const std::vector<std::string>& argv, const std::filesystem::path& directory,
+                       const std::filesystem::path& log, rusage& usage)
+{
+  std::vector<char*> args;
+  for(const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  std::cout.flush();
+  const pid_t pid = fork();
+  if(pid < 0) throw std::runtime_error(std::string("fork() failed: ") + std::strerror(errno));
+  if(pid == 0) {
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if(fd < 0 || chdir(directory.c_str()) != 0 || dup2(fd, STDOUT_FILENO) < 0 || dup2(fd, STDERR_FILENO) < 0) _exit(127);
+    execvp(args[0], args.data());
+    std::fprintf(stderr, "cannot run %s: %s\n", args[0], std::strerror(errno));
+    _exit(127);
+  }
+  int status = 0;
+  if(wait4(pid, &status, 0, &usage) < 0) throw std::runtime_error(std::string("wait4() failed: ") + std::strerror(errno));
+  return status;
+}
+
+static std::string read_text(const std::filesystem::path& path)
+{
+  std::ifstream is(path);
+  std::ostringstream text;
+  text << is.rdbuf();
+  return text.str();
+}
+
+// The last n lines of `text`.
+static std::string last_lines(const std::string& text, int n)
+{
+  std::size_t start = text.size();
+  while(n-- >= 0 && start > 0) {
+    const std::size_t newline = text.rfind('\n', start - 1);
+    start = newline == std::string::npos ? 0 : newline;
+  }
+  return text.substr(start);
+}
+
+// Smaller patches for a surface whose classified patches Gmsh cannot parametrize at its defaults
+// (couplingdown: "Wrong topology of boundary mesh for parametrization", then HXT fails; 3000, 2000
+// and 1000 triangles fail too).
+static const int gmsh_fallback_reparam_max_triangles = 500;
+
+static Run mesh_with_gmsh(const Input& in, double h)
+{
+  const char* program = std::getenv("GMSH");
+  const std::string gmsh = program && *program ? program : "gmsh";
+  const Temporary_directory dir;
+  write_file((dir.path / "surface.msh").string(), [&](std::ostream& os) { write_gmsh_surface(os, in.surface); });
+
+  int reparam_max_triangles = 0;   // Gmsh's default
+  rusage usage;
+  int status = 0;
+  double process_seconds = 0.;
+  std::string log;
+  for(;;) {
+    write_file((dir.path / "mesh.geo").string(), [&](std::ostream& os) { os << gmsh_script(h, reparam_max_triangles); });
+    const auto start = std::chrono::steady_clock::now();
+    status = run_program({ gmsh, "mesh.geo", "-3", "-nt", "1", "-format", "mesh", "-o", "tets.mesh" }, dir.path,
+                         dir.path / "gmsh.log", usage);
+    process_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    log = read_text(dir.path / "gmsh.log");
+    if(reparam_max_triangles != 0 || log.find("Wrong topology of boundary mesh for parametrization") == std::string::npos)
+      break;
+    reparam_max_triangles = gmsh_fallback_reparam_max_triangles;
+    std::cout << "  gmsh cannot parametrize a patch (Wrong topology of boundary mesh for parametrization): again "
+                 "with Mesh.ReparamMaxTriangles = " << reparam_max_triangles << std::endl;
+  }
+  if(!WIFEXITED(status) || WEXITSTATUS(status) != 0 || log.find("Error   :") != std::string::npos)
+    throw std::runtime_error(gmsh + " failed (" +
+                             (WIFSIGNALED(status) ? std::string("signal ") + strsignal(WTERMSIG(status))
+                                                  : "exit status " + std::to_string(WEXITSTATUS(status))) +
+                             "); the end of its output:\n" + last_lines(log, 15));
+
+  // Gmsh's own wall times of each meshing stage ("Done meshing 3D (Wall 0.21s, CPU 0.19s)")
+  std::array<double, 3> stage_seconds = { { -1., -1., -1. } };
+  const std::regex done(R"(Done meshing ([123])D \(Wall ([0-9.eE+-]+)s)");
+  for(std::sregex_iterator m(log.begin(), log.end(), done), end; m != end; ++m)
+    stage_seconds[std::stoi((*m)[1]) - 1] = std::stod((*m)[2]);
+  for(double s : stage_seconds)
+    if(s < 0.) throw std::runtime_error("no 'Done meshing 1D/2D/3D (Wall ...)' in Gmsh's output:\n" + last_lines(log, 15));
+
+  Tet_mesh tets;
+  std::ifstream is(dir.path / "tets.mesh");
+  if(!is) throw std::runtime_error(gmsh + " wrote no tets.mesh; the end of its output:\n" + last_lines(log, 15));
+  LM::read_medit(is, tets);
+
+  Run run;
+  run.mesh = make_tetrahedral_mesh(tets.points, std::move(tets.tets));
+  run.seconds = stage_seconds[0] + stage_seconds[1] + stage_seconds[2];
+  run.peak_rss_mb = double(usage.ru_maxrss) / 1024.;
+  std::ostringstream details;
+  details << std::setprecision(6) << "\"gmsh_wall_seconds\": {\"mesh_1d\": " << stage_seconds[0]
+          << ", \"mesh_2d\": " << stage_seconds[1] << ", \"mesh_3d\": " << stage_seconds[2]
+          << ", \"process\": " << process_seconds << "}";
+  if(reparam_max_triangles > 0) details << ", \"gmsh_reparam_max_triangles\": " << reparam_max_triangles;
+  run.details = details.str();
+  std::cout << "  gmsh h = " << h << ": meshing 1D " << stage_seconds[0] << " s, 2D " << stage_seconds[1] << " s, 3D "
+            << stage_seconds[2] << " s (Gmsh's wall times), the whole process " << process_seconds << " s" << std::endl;
+  return run;
+}
+
 static Run mesh_once(const Method& m, const Input& in, double size, bool count_only, const Options& o)
 {
   switch(m.family) {
@@ -342,6 +532,7 @@ static Run mesh_once(const Method& m, const Input& in, double size, bool count_o
       return mesh_with_tetgen(in, size);
 #endif
       break;   // method_from_name() rejected it
+    case Family::GMSH: return mesh_with_gmsh(in, size);
   }
   throw std::logic_error("mesh_once(): the method is not in this build");
 }
@@ -397,24 +588,21 @@ static void write_json(std::ostream& os, const LM::Mesh_quality_3& q, const Meth
      << "  \"valid\": " << (valid ? "true" : "false") << ",\n"
      << "  \"epsilon_lattice\": " << json_string(LM::make_lattice(m.lattice).name) << ",\n"
      << "  \"size_parameter\": " << json_string(size_parameter(m.family).name) << ",\n"
+     << (run.details.empty() ? "" : "  " + run.details + ",\n")
      << "  \"tuning\": [";
   for(std::size_t i = 0; i < tried.size(); ++i)
     os << (i ? ", " : "") << "{\"size\": " << tried[i].size << ", \"vertices\": " << tried[i].vertices << "}";
   os << "],\n"
-     << "  \"notes\": \"seconds.total is the wall time of the final meshing call only (no tuning, "
-        "domain set-up or measurement; optimize and mesh are not measured apart); peak_rss_mb is the "
-        "peak RSS of the process that ran it"
+     << "  \"notes\": \""
+     << (m.family == Family::GMSH
+           ? "seconds.total is the sum of the wall times Gmsh reports for meshing 1D, 2D and 3D in the "
+             "final run (surface remeshing at the size, HXT and its optimizer; not reading the surface, "
+             "classifying it, writing the mesh, nor the tuning or measurement), gmsh_wall_seconds has "
+             "them apart and the whole gmsh process's; peak_rss_mb is the peak RSS of the gmsh process"
+           : "seconds.total is the wall time of the final meshing call only (no tuning, domain set-up or "
+             "measurement; optimize and mesh are not measured apart); peak_rss_mb is the peak RSS of the "
+             "process that ran it")
      << (m.family == Family::MESH_3 ? "; the tuning counts come from refinement-only runs" : "") << "\"\n}\n";
-}
-
-template <typename Writer>
-static void write_file(const std::string& name, const Writer& writer)
-{
-  if(name.empty()) return;
-  std::ofstream os(name);
-  if(!os) throw std::runtime_error("cannot write '" + name + "'");
-  writer(os);
-  if(!os) throw std::runtime_error("writing '" + name + "' failed");
 }
 
 static void report(const Method& m, const Input& in, const Run& run, const std::vector<Attempt>& tried, const Options& o)
@@ -515,7 +703,7 @@ static Options parse(int argc, char** argv)
   }
   if(o.input.empty() == o.domain.empty()) throw std::invalid_argument("give either an input surface file or --domain cube");
   if(!o.domain.empty() && o.domain != "cube") throw std::invalid_argument("unknown domain '" + o.domain + "' (expected cube)");
-  if(o.method.empty()) throw std::invalid_argument("a method is required: --method bcc|fcc|gaussian|cvt|odt|cvt-pe|odt-pe|tetgen");
+  if(o.method.empty()) throw std::invalid_argument("a method is required: --method bcc|fcc|gaussian|cvt|odt|cvt-pe|odt-pe|tetgen|gmsh");
   if(!(o.vertices >= 16. && o.vertices <= 1e7)) throw std::invalid_argument("--vertices N is required, with 16 <= N <= 10^7");
   return o;
 }

@@ -5,6 +5,9 @@
 # Reporting of benchmark/run: reads the lattice-benchmark outputs of RUNS (<model>/<method>.json and
 # .csv, scaling/bcc_<n>_t<threads>.json) and writes to OUT the per-model tables (results_<model>.md
 # and .csv), their histograms (hist_<model>.png), scaling.png and the summary results.md.
+# A method with no run in RUNS (neither .json nor .log) keeps its row of the earlier
+# OUT/results_<model>.csv, with the date and load average of its own run, and is marked as kept;
+# so does the scaling section of the earlier results.md when RUNS has no scaling runs.
 #   report.py RUNS OUT --models a,b [--threads T] [--scaling-model M] [--quick]
 
 import argparse
@@ -32,6 +35,7 @@ METHODS = [
     ("cvt-pe", "CVT + perturb + exude"),
     ("odt-pe", "ODT + perturb + exude"),
     ("tetgen", "TetGen -pq"),
+    ("gmsh", "Gmsh HXT + optimizer"),
 ]
 LABEL = dict(METHODS)
 TOLERANCE = 0.05   # of the vertex-count tuning in lattice-benchmark
@@ -53,16 +57,35 @@ HISTOGRAMS = [("dihedral", "dihedral angle (°)", (0, 180)), ("rho", "ρ", (0, 1
 NOTES = """- Every method meshes the same validated surface (closed, not self-intersecting) to about the
   target vertex count: its size parameter (ours: the requested count; Mesh_3: one size for cells,
   facets and feature edges, facet distance size/10, facet angle 25°, radius-edge ratio 3; TetGen:
-  the maximum volume of `-pqa`) is tuned by secant steps on log #V until #V is within ±5 % of the
-  target (at most 6 attempts; † marks a count outside). Each attempt runs in its own process.
+  the maximum volume of `-pqa`; Gmsh: one mesh size, `Mesh.MeshSizeMin` = `Mesh.MeshSizeMax`) is
+  tuned by secant steps on log #V until #V is within ±5 % of the target (at most 6 attempts; †
+  marks a count outside). Each attempt runs in its own process.
 - time: wall time of the final meshing call only (no tuning, domain set-up or measurement); peak
-  RSS: of the process that ran it. Mesh_3 and TetGen run sequentially (CGAL's parallel Mesh_3
-  needs TBB); ours ran with {threads} thread(s).
+  RSS: of the process that ran it. Mesh_3, TetGen and Gmsh run sequentially (CGAL's parallel
+  Mesh_3 needs TBB, Gmsh is given `-nt 1`); ours ran with {threads} thread(s).
 - CVT and ODT: `make_mesh_3` with `lloyd()` / `odt()` at CGAL's defaults on a
   `Polyhedral_mesh_domain_with_features_3` with the same 60° features as ours; raw rows without
   the sliver perturber and exuder (the paper's rows), "+ perturb + exude" rows with CGAL's
   defaults, as a CGAL user runs it. Particle2013: the hole-less Gaussian kernel as published, from
   a random start at the final count, no insertion or deletion, then our flips and smoothing.
+- Gmsh (Debian's `gmsh` {gmsh_version} program, as its user meshes a triangulated surface): the
+  surface merged as a Gmsh mesh (coordinates at full precision), `ClassifySurfaces{{60°, 1, 1, π}}`
+  and `CreateGeometry` (the same 60° features as ours, patches split until parametrizable), one
+  `Surface Loop` and `Volume`, then `gmsh -3 -nt 1` with `Mesh.Algorithm3D = 10` (HXT),
+  `Mesh.Optimize = 1`, `Mesh.MeshSizeMin` = `Mesh.MeshSizeMax` = the tuned size and
+  `Mesh.MeshSizeFromCurvature = 0`, output as Medit and read back. Gmsh remeshes curves and
+  surfaces at the size (Frontal-Delaunay) before HXT fills the volume. With HXT, `Mesh.Optimize`
+  is HXT's own optimizer (smoothing, edge removal and growing sphere cavities on tetrahedra of
+  quality below `Mesh.OptimizeThreshold` = 0.3); Gmsh 4.8 runs none of its other optimizers after
+  HXT (`Mesh.OptimizeNetgen` is ignored there, and Debian's Gmsh has no Netgen), and an explicit
+  `OptimizeMesh` after it changed little (fandisk: 16,900 → 16,810 tetrahedra below 40°). Where
+  Gmsh cannot parametrize a classified patch at its defaults ("Wrong topology of boundary mesh for
+  parametrization", after which HXT fails: couplingdown), the run is repeated with smaller patches,
+  `Mesh.ReparamMaxTriangles = 500` (3000, 2000 and 1000 fail too), and only that run is timed. Its
+  time is the sum of the wall times Gmsh reports for meshing 1D, 2D and 3D (surface remeshing,
+  HXT and its optimizer; reading and classifying the surface and writing the mesh, the analogue
+  of the others' domain set-up and output, are left out: see the stages below); its peak RSS is
+  that of the gmsh process.
 - Every mesh is measured by `compute_mesh_quality()` with the identity field; ε is measured
   against the FCC one-ring for ours with FCC and against the BCC one-ring for every other method.
   ‡ marks a mesh that fails `check_tetrahedral_mesh()` (see its log)."""
@@ -79,15 +102,73 @@ def load_json(path):
         return json.load(f)
 
 
-def model_runs(runs, model):
-    """The (method, record or None) pairs of a model, in table order; None for a failed run."""
+def run_provenance(runs, path):
+    """The date of a run (its file's) and the load average before the runs in RUNS."""
+    date = datetime.date.fromtimestamp(os.path.getmtime(path)).isoformat()
+    load = "unknown"
+    if os.path.exists(os.path.join(runs, "loadavg")):
+        with open(os.path.join(runs, "loadavg")) as f:
+            load = ", ".join(f.read().split()[:3])
+    return date, load
+
+
+def earlier_report(out):
+    """The date and load average that the earlier OUT/results.md states, for rows kept from
+    tables written before their date and load were in the CSV files."""
+    date, load = "unknown", "unknown"
+    path = os.path.join(out, "results.md")
+    if os.path.exists(path):
+        with open(path) as f:
+            text = f.read()
+        found = re.search(r"^Generated by .* on (\d{4}-\d{2}-\d{2})\.", text, re.MULTILINE)
+        date = found.group(1) if found else date
+        found = re.search(r"load average before the runs \(1, 5, 15 min\): ([^\n;]*)", text)
+        load = found.group(1).strip() if found else load
+    return date, load
+
+
+def earlier_rows(out, model, earlier):
+    """The rows of the earlier OUT/results_<model>.csv by method, as records (None for a failed
+    run), marked as kept."""
+    path = os.path.join(out, f"results_{model}.csv")
+    rows = {}
+    if not os.path.exists(path):
+        return rows
+    with open(path, newline="") as f:
+        for row in csv.DictReader(f):
+            if row[COLUMNS[0][0]] == "failed":
+                rows[row["method"]] = None
+                continue
+            record = {}
+            for name, path_, decimals in COLUMNS:
+                parent = record
+                for key in path_[:-1]:
+                    parent = parent.setdefault(key, {})
+                parent[path_[-1]] = float(row[name]) if decimals else int(float(row[name]))
+            target = float(row["target_vertices"])
+            record["target_vertices"] = int(target) if target.is_integer() else target
+            record["valid"] = row["valid"] == "True"
+            record["date"] = row.get("date") or earlier[0]
+            record["loadavg"] = row.get("loadavg") or earlier[1]
+            record["kept"] = True
+            rows[row["method"]] = record
+    return rows
+
+
+def model_runs(runs, model, kept=None):
+    """The (method, record or None) pairs of a model, in table order; None for a failed run. A
+    method with no run in RUNS takes its record from `kept` (earlier_rows()) when it has one."""
     result = []
     for method, _ in METHODS:
         path = os.path.join(runs, model, method + ".json")
         if os.path.exists(path):
-            result.append((method, load_json(path)))
+            record = load_json(path)
+            record["date"], record["loadavg"] = run_provenance(runs, path)
+            result.append((method, record))
         elif os.path.exists(os.path.join(runs, model, method + ".log")):
             result.append((method, None))
+        elif kept and method in kept:
+            result.append((method, kept[method]))
     return result
 
 
@@ -112,15 +193,22 @@ def write_model_tables(runs, out, model, rows):
              "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
     with open(os.path.join(out, f"results_{model}.csv"), "w", newline="") as f:
         writer = csv.writer(f)
-        writer.writerow(["method"] + [c[0] for c in COLUMNS] + ["target_vertices", "valid"])
+        writer.writerow(["method"] + [c[0] for c in COLUMNS] + ["target_vertices", "valid", "date", "loadavg"])
         for method, record in rows:
             if record is None:
                 lines.append(f"| {LABEL[method]} | failed (see runs/{model}/{method}.log) |" + " |" * (len(COLUMNS) - 1))
-                writer.writerow([method] + ["failed"] + [""] * (len(COLUMNS) + 1))
+                writer.writerow([method] + ["failed"] + [""] * (len(COLUMNS) + 3))
                 continue
             lines.append("| " + " | ".join([method_label(method, record)] + [cell(record, c) for c in COLUMNS]) + " |")
             writer.writerow([method] + [get(record, c[1]) for c in COLUMNS]
-                            + [record["target_vertices"], record.get("valid", True)])
+                            + [record["target_vertices"], record.get("valid", True), record["date"], record["loadavg"]])
+    kept = {}
+    for method, record in rows:
+        if record is not None and record.get("kept"):
+            kept.setdefault((record["date"], record["loadavg"]), []).append(LABEL[method])
+    for (date, load), labels in sorted(kept.items()):
+        lines += ["", f"Kept from the earlier tables (runs of {date}, load average before them {load}; "
+                      f"not rerun here): {', '.join(labels)}."]
     text = "\n".join(lines) + "\n"
     with open(os.path.join(out, f"results_{model}.md"), "w") as f:
         f.write(text)
@@ -138,11 +226,21 @@ def read_histograms(path):
 
 
 def plot_histograms(runs, out, model, rows):
+    """Writes the histograms of the rows that have them in RUNS: hist_<model>.png, or when some
+    rows are kept from earlier tables (whose histograms are in the earlier hist_<model>.png),
+    hist_<model>_<methods>.png. Returns the file name, or None when no row has histograms."""
+    plotted = [m for m, r in rows if r is not None and not r.get("kept")
+               and os.path.exists(os.path.join(runs, model, m + ".csv"))]
+    if not plotted:
+        return None
+    name = f"hist_{model}.png"
+    if any(r is not None and r.get("kept") for _, r in rows):
+        name = f"hist_{model}_{'_'.join(plotted)}.png"
     figure, axes = plt.subplots(2, 2, figsize=(12, 8))
     colors = plt.get_cmap("tab10")
     for k, (method, record) in enumerate(rows):
         path = os.path.join(runs, model, method + ".csv")
-        if record is None or not os.path.exists(path):
+        if method not in plotted:
             continue
         data = read_histograms(path)
         for ax, (quantity, _, _) in zip(axes.flat, HISTOGRAMS):
@@ -157,22 +255,37 @@ def plot_histograms(runs, out, model, rows):
     axes.flat[0].legend(fontsize=7)
     figure.suptitle(f"{model}: distributions per method (isotropic space, T = I)")
     figure.tight_layout()
-    name = f"hist_{model}.png"
     figure.savefig(os.path.join(out, name), dpi=110)
     plt.close(figure)
     return name
 
 
-def speed_ratios(runs, models):
-    pairs = [(a, b) for a in ("bcc", "fcc") for b in ("cvt", "odt", "cvt-pe", "odt-pe")]
+def speed_ratios(rows_of, models):
+    pairs = [(a, b) for a in ("bcc", "fcc") for b in ("cvt", "odt", "cvt-pe", "odt-pe", "gmsh")]
     header = ["model"] + [f"{a.upper()} / {LABEL[b].split(' (')[0]}" for a, b in pairs]
     lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
     for model in models:
-        times = {m: r["seconds"]["total"] for m, r in model_runs(runs, model) if r is not None}
+        times = {m: r["seconds"]["total"] for m, r in rows_of[model] if r is not None}
         cells = [f"{times[a] / times[b]:.2f}" if a in times and b in times and times[b] > 0 else "–"
                  for a, b in pairs]
         lines.append("| " + " | ".join([model] + cells) + " |")
     return "\n".join(lines) + "\n"
+
+
+def gmsh_stages(rows_of, models):
+    """Gmsh's own wall times of its stages in the reported runs (lattice-benchmark's
+    gmsh_wall_seconds), or "" when there are none."""
+    lines = ["| model | 1D | 2D | 3D (HXT + optimizer) | time (1D + 2D + 3D) | the whole gmsh process |",
+             "|---|---|---|---|---|---|"]
+    for model in models:
+        record = dict(rows_of[model]).get("gmsh")
+        if record is None or "gmsh_wall_seconds" not in record:
+            continue
+        w = record["gmsh_wall_seconds"]
+        patches = record.get("gmsh_reparam_max_triangles")
+        lines.append(f"| {model}{f' (patches of ≤ {patches} triangles)' if patches else ''} | {w['mesh_1d']:.2f} | "
+                     f"{w['mesh_2d']:.2f} | {w['mesh_3d']:.2f} | {record['seconds']['total']:.2f} | {w['process']:.2f} |")
+    return "\n".join(lines) + "\n" if len(lines) > 2 else ""
 
 
 def fit_exponent(x, y):
@@ -229,6 +342,26 @@ def command_output(command):
         return "unknown"
 
 
+def earlier_scaling(out, earlier_date):
+    """The scaling section of the earlier OUT/results.md, marked as kept, or "" without one."""
+    path = os.path.join(out, "results.md")
+    if not os.path.exists(path):
+        return ""
+    with open(path) as f:
+        found = re.search(r"^## Scaling\n\n(.*?)(?=^## |\Z)", f.read(), re.MULTILINE | re.DOTALL)
+    if not found:
+        return ""
+    text = found.group(1).rstrip("\n") + "\n"
+    if not text.startswith("Kept from"):
+        text = f"Kept from the earlier report (runs of {earlier_date}; no scaling runs here).\n\n" + text
+    return text
+
+
+def gmsh_version():
+    version = command_output(["dpkg-query", "-W", "-f=${Version}", "gmsh"])
+    return version.split("+")[0]
+
+
 def machine(runs):
     with open("/proc/cpuinfo") as f:
         models = re.findall(r"^model name\s*:\s*(.*)$", f.read(), re.MULTILINE)
@@ -249,8 +382,8 @@ def machine(runs):
         f"nproc = {command_output(['nproc'])}), {memory_kb / 2**20:.1f} GiB memory; load average before "
         f"the runs (1, 5, 15 min): {load}",
         f"- {os_name}, kernel {platform.release()}; {command_output(['g++', '--version']).splitlines()[0]}",
-        f"- CGAL {version('libcgal-dev')}, TetGen {version('libtet1.5-dev')}, Eigen {version('libeigen3-dev')}, "
-        f"LBFGS++ {version('liblbfgspp-dev')}; Release build (-O3 -frounding-math)",
+        f"- CGAL {version('libcgal-dev')}, TetGen {version('libtet1.5-dev')}, Gmsh {version('gmsh')}, "
+        f"Eigen {version('libeigen3-dev')}, LBFGS++ {version('liblbfgspp-dev')}; Release build (-O3 -frounding-math)",
     ])
 
 
@@ -265,6 +398,8 @@ def main():
     args = parser.parse_args()
     models = [m for m in args.models.split(",") if m]
     os.makedirs(args.out, exist_ok=True)
+    earlier = earlier_report(args.out)   # read before results.md is rewritten
+    rows_of = {model: model_runs(args.runs, model, earlier_rows(args.out, model, earlier)) for model in models}
 
     parts = ["# Baselines benchmark", "",
              f"Generated by `benchmark/run{' --quick' if args.quick else ''}` on "
@@ -272,18 +407,30 @@ def main():
     if args.quick:
         parts.append("**Quick run: every vertex count ×0.1, a test of the pipeline, not results.**")
     parts += ["", "## Machine", "", machine(args.runs), "", "## How the methods were run", "",
-              NOTES.format(threads=args.threads), "", "## Quality, time and memory per model", ""]
+              NOTES.format(threads=args.threads, gmsh_version=gmsh_version()), "",
+              "## Quality, time and memory per model", ""]
     for model in models:
-        rows = model_runs(args.runs, model)
+        rows = rows_of[model]
         if not rows:
             parts += [f"### {model}", "", "no runs", ""]
             continue
-        parts += [write_model_tables(args.runs, args.out, model, rows),
-                  f"![{model}](" + plot_histograms(args.runs, args.out, model, rows) + ")", ""]
+        parts.append(write_model_tables(args.runs, args.out, model, rows))
+        figure = plot_histograms(args.runs, args.out, model, rows)
+        earlier_figure = f"hist_{model}.png"
+        if any(r is not None and r.get("kept") for _, r in rows) and os.path.exists(os.path.join(args.out, earlier_figure)):
+            parts += [f"![{model}, the kept rows]({earlier_figure})", ""]
+        if figure:
+            parts += [f"![{model}]({figure})", ""]
     parts += ["## Speed ratios", "",
-              "Time of ours divided by the time of a baseline on the same model, from the runs above "
-              "(below 1: ours is faster).", "", speed_ratios(args.runs, models)]
-    scaling_text = scaling(args.runs, args.out, args.scaling_model)
+              "Time of ours divided by the time of a baseline on the same model, from the rows above "
+              "(below 1: ours is faster).", "", speed_ratios(rows_of, models)]
+    stages = gmsh_stages(rows_of, models)
+    if stages:
+        parts += ["## Gmsh's stages", "",
+                  "Wall times in seconds that Gmsh reports for each stage of the runs above; the table's time is "
+                  "1D + 2D + 3D, the whole process also reads and classifies the surface, creates the geometry "
+                  "and writes the mesh.", "", stages]
+    scaling_text = scaling(args.runs, args.out, args.scaling_model) or earlier_scaling(args.out, earlier[0])
     if scaling_text:
         parts += ["## Scaling", "", scaling_text]
     with open(os.path.join(args.out, "results.md"), "w") as f:
