@@ -27,15 +27,16 @@ template <typename K>
 class Lattice_mesher_traits_3 : public K
 {
 public:
-  typedef K                                Kernel;
-  typedef typename K::FT                   FT;
-  typedef typename K::Point_3              Point_3;
-  typedef typename K::Vector_3             Vector_3;
+  typedef K                                Kernel;   ///< the kernel
+  typedef typename K::FT                   FT;       ///< the number type
+  typedef typename K::Point_3              Point_3;  ///< the point type
+  typedef typename K::Vector_3             Vector_3; /*!< \brief the vector type */
   /// 3x3 frame: its columns are the lattice cube edges t1, t2, t3.
   typedef Eigen::Matrix<double, 3, 3>      Matrix_3;
   /// Dense 3-vector used in the hot loops.
   typedef Eigen::Matrix<double, 3, 1>      Vector_d3;
 
+  /// constructs the traits from the kernel object `k`
   Lattice_mesher_traits_3(const K& k = K()) : K(k) {}
 };
 

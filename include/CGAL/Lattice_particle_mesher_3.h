@@ -23,6 +23,7 @@
 #include <CGAL/Lattice_mesher_3/smooth_vertices.h>
 #include <CGAL/Lattice_mesher_3/tetrahedralize_particles.h>
 #include <CGAL/Lattice_mesher_3/internal/field_sampling.h>
+#include <CGAL/Lattice_mesher_3/internal/domain_indices.h>
 
 #include <chrono>
 #include <cmath>
@@ -44,9 +45,10 @@ struct Round_report
   int level = 0;            ///< coarse-to-fine level: 0 is the final edge length
   int round = 0;            ///< round within the level
   bool final_round = false; ///< the closing, tightly converged round
-  std::size_t particles = 0;
-  std::size_t deleted = 0, inserted = 0;
-  int iterations = 0;
+  std::size_t particles = 0; ///< number of particles after the round
+  /*! \brief number of particles deleted before the round's optimization */
+  std::size_t deleted = 0, inserted = 0; ///< number of particles inserted before the round's optimization
+  int iterations = 0;       ///< number of L-BFGS iterations of the round
   double energy = 0.;       ///< total GHK energy
   double seconds = 0.;      ///< since the optimization started
 };
@@ -54,6 +56,7 @@ struct Round_report
 /// The visitor that does nothing.
 struct Null_lattice_mesher_visitor
 {
+  /// does nothing
   void round_done(const Round_report&) {}
 };
 
@@ -155,9 +158,9 @@ template <typename Traits, typename MeshDomain, typename FrameField>
 class Lattice_particle_mesher_3
 {
 public:
-  typedef typename Traits::Point_3 Point_3;
-  typedef Lattice_mesher_3::Particle_set_3<Point_3> Particle_set;
-  typedef Lattice_mesher_3::Tetrahedral_mesh_3<Point_3> Mesh;
+  typedef typename Traits::Point_3 Point_3; ///< the point type
+  typedef Lattice_mesher_3::Particle_set_3<Point_3> Particle_set; ///< the particle system
+  typedef Lattice_mesher_3::Tetrahedral_mesh_3<Point_3> Mesh; ///< the output mesh type
 
   static_assert(Lattice_mesher_3::internal::Is_frame_field_3<FrameField, Traits>::value,
                 "FrameField must be a model of FrameField_3: Matrix_3 frame(const Point_3&) const");
@@ -175,7 +178,8 @@ public:
                                 parameters::choose_parameter<Traits>(parameters::get_parameter(np, internal_np::geom_traits)))
   {}
 
-  // The parameters as lattice_mesh_3() read them.
+  /// \cond SKIP_IN_MANUAL
+  // The parameters as lattice_mesh_3() reads them from its named parameters, checked as above.
   Lattice_particle_mesher_3(const MeshDomain& domain, const FrameField& field,
                             const Lattice_mesher_3::internal::Lattice_mesher_parameters& p, const Traits& gt = Traits())
     : domain_(domain), field_(field), p_(p), traits_(gt), lattice_(p.lattice)
@@ -208,6 +212,7 @@ public:
       throw std::invalid_argument(os.str());
     }
   }
+  /// \endcond
 
   /// Runs the whole particle optimization: the start (`initialize_particles()`) at the coarsest
   /// level, rounds of L-BFGS with deletion and insertion, refinement to the next level, and a
@@ -282,6 +287,7 @@ public:
     Lattice_mesher_3::internal::continue_after(visitor, rep);
   }
 
+  /// runs `optimize(visitor)` with a `Null_lattice_mesher_visitor`
   void optimize() { Lattice_mesher_3::Null_lattice_mesher_visitor v; optimize(v); }
 
   /// The start at edge length `l`: a fixed particle at every corner of the domain, grown by
@@ -361,7 +367,8 @@ public:
 
   /// Connects the current particles into a tetrahedral mesh, then improves its worst tetrahedra
   /// (`flip_tetrahedra()`, `smooth_vertices()`, `collapse_edges()`), as the parameters say, and
-  /// removes the slivers that lie flat on the boundary (`peel_boundary_slivers()`). The
+  /// removes the slivers that lie flat on the boundary (`peel_boundary_slivers()`); last, labels
+  /// the tetrahedra and boundary faces with the domain's subdomain and surface patch indices. The
   /// visitor's `stage_done()`, if it has one, follows the stages.
   template <typename Visitor>
   Mesh tetrahedralize(Visitor& visitor) const
@@ -417,17 +424,23 @@ public:
     // surface holds: the flat ones go
     Lattice_mesher_3::internal::peel_boundary_slivers(mesh, field_, Lattice_mesher_3::internal::Peeling_options());
     stage("peeling");
+    Lattice_mesher_3::internal::label_mesh(
+        mesh, Lattice_mesher_3::internal::Lattice_domain_indices<Lattice_mesher_3::internal::Int_indices, MeshDomain>{ domain_ });
     return mesh;
   }
 
+  /// runs `tetrahedralize(visitor)` with a `Null_lattice_mesher_visitor`
   Mesh tetrahedralize() const { Lattice_mesher_3::Null_lattice_mesher_visitor v; return tetrahedralize(v); }
 
   /// The traits object, as given by the named parameter `geom_traits`; its predicates decide the
   /// Delaunay tetrahedralization.
   const Traits& geom_traits() const { return traits_; }
 
+  /// the current particles
   const Particle_set& particles() const { return particles_; }
+  /// the current particles, which may be changed before the next stage
   Particle_set& particles() { return particles_; }
+  /// the lattice of the particles' Gaussian Hole Kernel, with the `sigma_ratio` of the parameters
   const Lattice_mesher_3::Lattice_3& lattice() const { return lattice_; }
 
   /// Isotropic volume of the domain, the integral of |det B| over it (Monte Carlo for a

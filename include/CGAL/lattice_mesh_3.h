@@ -347,7 +347,10 @@ them (`tetrahedralize_particles()`).
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns the mesh as vertex and tetrahedron arrays (`Lattice_mesher_3::Tetrahedral_mesh_3`).
+\returns the mesh as vertex and tetrahedron arrays (`Lattice_mesher_3::Tetrahedral_mesh_3`),
+with the subdomain index of each tetrahedron and the surface patch index of each boundary face:
+a Mesh_3 domain's own (pairs of subdomain indices numbered 1, 2, ...), or those of a
+`LatticeMeshDomain_3`.
 \throws std::invalid_argument naming the parameter if one is out of range: a length, ratio or
 tolerance that is not positive and finite, fewer than 1 thread, `coarse_levels` outside [-1, 4],
 `max_rounds` below -1, `number_of_smoothing_rounds` below 0, or an edge length that needs more
@@ -363,8 +366,12 @@ lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
   using parameters::get_parameter;
   using parameters::is_default_parameter;
   namespace LM = Lattice_mesher_3;
-  if constexpr(!LM::internal::Is_lattice_mesh_domain_3<MeshDomain>::value)
-    return lattice_mesh_3(LM::internal::lattice_domain_for(domain, np), field, np);
+  if constexpr(!LM::internal::Is_lattice_mesh_domain_3<MeshDomain>::value) {
+    auto mesh = lattice_mesh_3(LM::internal::lattice_domain_for(domain, np), field, np);
+    typedef LM::internal::Mesh_domain_index_types<MeshDomain> Indices;
+    LM::internal::label_mesh(mesh, LM::internal::Mesh_domain_indices<Indices, MeshDomain>(domain, typename Indices::Subdomain_index(1)));
+    return mesh;
+  }
   else {
 
   static_assert(is_default_parameter<NamedParameters, internal_np::feature_angle_t>::value,

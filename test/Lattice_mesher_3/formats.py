@@ -65,6 +65,15 @@ def main():
     unique, counts = np.unique(np.sort(faces, axis=1), axis=0, return_counts=True)
     check(np.array_equal(sorted_rows(unique[counts == 1]), sorted_rows(triangles)),
           'the triangles are the faces in one tetrahedron')
+    # the surface patches: Medit references, Gmsh physical groups, the same for each triangle
+    def labels(mesh, kind, key):
+        return np.concatenate([d for block, d in zip(mesh.cells, mesh.cell_data.get(key, [])) if block.type == kind] or [[]])
+    patches = labels(medit, 'triangle', 'medit:ref')
+    check(len(patches) == len(triangles) and len(np.unique(patches)) > 1, '.mesh: the triangles carry several surface patches')
+    msh = meshes['.msh']
+    by_face = {tuple(sorted(t)): p for t, p in zip(cells(msh, 'triangle'), labels(msh, 'triangle', 'gmsh:physical'))}
+    check(len(patches) == len(triangles) and all(by_face.get(tuple(sorted(t))) == p for t, p in zip(triangles, patches)),
+          '.msh: each triangle in the physical group of its Medit patch')
     # the cell data of the VTU
     data = {k: np.concatenate(v) for k, v in meshes['.vtu'].cell_data.items()}
     check({'theta_min', 'rho', 'kappa'} <= set(data), '.vtu: theta_min, rho and kappa per tetrahedron')

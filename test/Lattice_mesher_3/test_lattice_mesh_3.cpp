@@ -26,6 +26,9 @@
 #include <fstream>
 #include <memory>
 #include <random>
+#include <map>
+#include <set>
+#include <sstream>
 #include <string>
 
 namespace {
@@ -420,20 +423,21 @@ TEST(Lattice_mesh_3, GeomTraitsObjectIsTheOneUsed)
   EXPECT_GT(*gt.calls, calls);
 }
 
-// A visitor may stop the optimization: the mesh is then made of the particles as they are.
+// A visitor may stop the optimization: the mesh is then made of the particles as they are
+// (here those of the first round, at the coarse level 2 l*).
 TEST(Lattice_mesh_3, VisitorStopsTheOptimization)
 {
-  struct Stop_after_two
+  struct Stop_after_first
   {
     int rounds = 0;
     std::vector<std::string> stages;
-    bool round_done(const LM::Round_report&) { return ++rounds < 2; }
+    bool round_done(const LM::Round_report&) { return ++rounds < 1; }
     void stage_done(const char* stage, double) { stages.push_back(stage); }
   } visitor;
   const Field field;
   const LM::Tetrahedral_mesh_3<Point_3> mesh =
       CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(0.125).coarse_levels(1).visitor(std::ref(visitor)));
-  EXPECT_EQ(visitor.rounds, 2);
+  EXPECT_EQ(visitor.rounds, 1);
   ASSERT_FALSE(visitor.stages.empty());
   EXPECT_EQ(visitor.stages.front(), "tetrahedralization");
   EXPECT_EQ(visitor.stages.back(), "peeling");
@@ -441,6 +445,32 @@ TEST(Lattice_mesh_3, VisitorStopsTheOptimization)
   // stopped at the coarse level: about an eighth of the vertices
   const std::size_t full = CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(0.125).coarse_levels(1)).points.size();
   EXPECT_LT(mesh.points.size(), full / 3);
+}
+
+// The mesh carries the domain's labels: the cube's six faces are six surface patches, each
+// boundary face in the patch of the side it lies on; one subdomain. Medit keeps them.
+TEST(Lattice_mesh_3, BoundaryFacesCarryTheSurfacePatches)
+{
+  EXPECT_EQ(cube().number_of_surface_patches(), 6);
+  const LM::Tetrahedral_mesh_3<Point_3> mesh = CGAL::lattice_mesh_3(cube(), Field(), CGAL::parameters::edge_length(0.2));
+  ASSERT_EQ(mesh.subdomains, std::vector<int>(mesh.tets.size(), 1));
+  ASSERT_EQ(mesh.boundary_patches.size(), mesh.boundary_faces.size());
+  std::map<int, std::set<std::pair<int, double> > > sides;   // patch -> (axis, coordinate) of its faces
+  for(std::size_t k = 0; k < mesh.boundary_faces.size(); ++k) {
+    const std::array<int, 3>& f = mesh.boundary_faces[k];
+    for(int axis = 0; axis < 3; ++axis) {
+      const double c = mesh.points[f[0]][axis];
+      if(mesh.points[f[1]][axis] == c && mesh.points[f[2]][axis] == c) sides[mesh.boundary_patches[k]].insert({ axis, c });
+    }
+  }
+  EXPECT_EQ(sides.size(), 6u);
+  for(const auto& s : sides) EXPECT_EQ(s.second.size(), 1u) << "patch " << s.first << " spans several sides";
+  std::stringstream file;
+  LM::write_medit(file, mesh);
+  LM::Tetrahedral_mesh_3<Point_3> back;
+  LM::read_medit(file, back);
+  EXPECT_EQ(back.boundary_patches, mesh.boundary_patches);
+  EXPECT_EQ(back.subdomains, mesh.subdomains);
 }
 
 TEST(Lattice_mesh_3, ClearErrors)

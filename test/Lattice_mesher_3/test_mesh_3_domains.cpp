@@ -71,6 +71,10 @@ TEST(Mesh_3_domains, PolyhedralDomainWithFeatures)
     volume += CGAL::volume(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], mesh.points[t[3]]);
   EXPECT_NEAR(volume, 1., 1e-6);
   EXPECT_GE(LM::compute_mesh_quality(mesh, Field(), CGAL::parameters::lattice(LM::make_lattice(LM::Lattice_type::BCC))).theta_min.min, 30.);
+  // the domain's own indices: its subdomain, and one of its patches for each side of the cube
+  EXPECT_EQ(std::set<int>(mesh.subdomains.begin(), mesh.subdomains.end()), std::set<int>{ 1 });
+  ASSERT_EQ(mesh.boundary_patches.size(), mesh.boundary_faces.size());
+  EXPECT_EQ(std::set<int>(mesh.boundary_patches.begin(), mesh.boundary_patches.end()).size(), 6u);
 }
 
 FT unit_sphere(const Point_3& p) { return p.x() * p.x() + p.y() * p.y() + p.z() * p.z() - 1.; }
@@ -95,6 +99,9 @@ TEST(Mesh_3_domains, ImplicitLabeledDomain)
   // less than the sagitta (1.5 l)^2 / 8
   EXPECT_LE(volume, 4. / 3. * CGAL_PI);
   EXPECT_GE(volume, 4. / 3. * CGAL_PI - 4. * CGAL_PI * (1.5 * l) * (1.5 * l) / 8.);
+  // one patch (between subdomain 1 and the outside, numbered 1), one subdomain (label 1)
+  EXPECT_EQ(mesh.boundary_patches, std::vector<int>(mesh.boundary_faces.size(), 1));
+  EXPECT_EQ(mesh.subdomains, std::vector<int>(mesh.tets.size(), 1));
   EXPECT_GE(LM::compute_mesh_quality(mesh, Field(), CGAL::parameters::lattice(LM::make_lattice(LM::Lattice_type::BCC))).theta_min.min, 15.);
 
   // with number_of_vertices, the sampling follows the l* of the count

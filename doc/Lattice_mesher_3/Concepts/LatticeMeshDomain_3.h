@@ -17,10 +17,9 @@ class LatticeMeshDomain_3
 public:
   /// \name Types
   /// @{
-  /// a CGAL kernel (e.g. `Epick`)
-  typedef unspecified_type Geom_traits;
-  typedef Geom_traits::Point_3 Point_3;
-  typedef Geom_traits::Vector_3 Vector_3;
+  typedef unspecified_type Geom_traits; ///< a CGAL kernel (e.g. `Epick`)
+  typedef Geom_traits::Point_3 Point_3; ///< the point type
+  typedef Geom_traits::Vector_3 Vector_3; /*!< \brief the vector type */
   /// `CGAL::Lattice_mesher_3::Boundary_projection_3<Geom_traits>`: the point, the unit outward
   /// normal (surface) or unit tangent (curve) there, the index of the curve (or -1), and the
   /// squared distance from the query.
@@ -45,11 +44,17 @@ public:
   Projection project_on_features(const Point_3& p) const;
   /// corners: points where the feature curves meet or turn sharply; meshes keep them as vertices
   const std::vector<Point_3>& corners() const;
-  /// volume, boundary area and total feature-curve length
+  /// volume of the domain
   double volume() const;
+  /// area of the boundary surface
   double area() const;
+  /// total length of the feature curves (0 for a smooth domain)
   double curves_length() const;
   /// writes points of the boundary surface, at most `spacing` apart, to `out` (used for the
   /// Hausdorff distance between a mesh boundary and the surface)
   template <typename OutputIterator> OutputIterator sample_surface(double spacing, OutputIterator out) const;
+  /// optional: the surface patch (from 1) of the boundary point closest to `p`; the mesh's
+  /// boundary faces carry it (`Tetrahedral_mesh_3::boundary_patches`). Without it, the boundary
+  /// is one patch.
+  int surface_patch_index(const Point_3& p) const;
 };

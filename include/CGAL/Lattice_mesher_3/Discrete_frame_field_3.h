@@ -80,8 +80,8 @@ template <typename GT>
 class Discrete_frame_field_3
 {
 public:
-  typedef typename GT::Point_3  Point_3;
-  typedef typename GT::Matrix_3 Matrix_3;
+  typedef typename GT::Point_3  Point_3;  ///< the point type
+  typedef typename GT::Matrix_3 Matrix_3; ///< the frame type, a 3x3 matrix
 
   /*!
   builds the field of the samples (`points[i]`, `frames[i]`).
@@ -109,8 +109,11 @@ public:
   /// returns the index of the sample nearest to `p`
   std::size_t nearest_sample(const Point_3& p) const { return data_->search.nearest(p).first; }
 
+  /// the number of samples
   std::size_t number_of_samples() const { return data_->points.size(); }
+  /// the sample points
   const std::vector<Point_3>& points() const { return data_->points; }
+  /// the frames of the samples, in the order of `points()`
   const std::vector<Matrix_3>& frames() const { return data_->frames; }
 
   /// the bounding box of the sample points

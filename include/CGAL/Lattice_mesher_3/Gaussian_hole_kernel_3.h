@@ -41,8 +41,9 @@ exponentials, since few holes lie within 4 sigma of v'.
 class Gaussian_hole_kernel_3
 {
 public:
-  typedef Eigen::Vector3d Vector;
+  typedef Eigen::Vector3d Vector; ///< the type of the isotropic-space offsets v'
 
+  /// the kernel of `lattice`: its holes O_k and its sigma
   explicit Gaussian_hole_kernel_3(const Lattice_3& lattice)
     : holes_(lattice.holes),
       hole_weight_(lattice.holes.empty() ? 0. : 1. / double(lattice.holes.size())),

@@ -65,10 +65,10 @@ template <typename K, typename Function>
 class Implicit_lattice_domain_3
 {
 public:
-  typedef K                                Geom_traits;
-  typedef typename K::Point_3              Point_3;
-  typedef typename K::Vector_3             Vector_3;
-  typedef Boundary_projection_3<K>         Projection;
+  typedef K                                Geom_traits; ///< the kernel
+  typedef typename K::Point_3              Point_3;     ///< the point type
+  typedef typename K::Vector_3             Vector_3;    ///< the vector type
+  typedef Boundary_projection_3<K>         Projection;  ///< the result of a projection on the boundary (`Boundary_projection_3`)
 
   /// \param f the function, negative inside the domain
   /// \param bbox a box that contains the domain
@@ -92,13 +92,16 @@ public:
 
   /// \name LatticeMeshDomain_3
   /// @{
-  CGAL::Bbox_3 bbox() const { return m_bbox; }
+  CGAL::Bbox_3 bbox() const { return m_bbox; } ///< the box given to the constructor
 
+  /// `true` if f(p) < 0
   bool is_inside(const Point_3& p) const { return value(p) < 0.; }
 
   /// 0: `f` gives no bound of the distance to its zero set
   double inside_distance_bound(const Point_3&) const { return 0.; }
 
+  /// the closest point of the zero set of `f` to `p`, with the unit outward normal (the normalized
+  /// gradient) there
   Projection project_on_surface(const Point_3& p) const
   {
     const double fp = value(p);
@@ -123,6 +126,7 @@ public:
     return projection(p, x, gradient(x));
   }
 
+  /// 0: the domain has no feature curve
   std::size_t number_of_curves() const { return 0; }
 
   /// always throws `std::out_of_range`: the domain has no feature curve
@@ -138,9 +142,13 @@ public:
     return Projection{p, CGAL::NULL_VECTOR, -1, std::numeric_limits<double>::infinity()};
   }
 
+  /// an empty vector: the domain has no corner
   const std::vector<Point_3>& corners() const { return m_corners; }
+  /// the volume of the domain, estimated on the grid
   double volume() const { return m_volume; }
+  /// the area of the boundary surface, estimated on the grid
   double area() const { return m_area; }
+  /// 0: the domain has no feature curve
   double curves_length() const { return 0.; }
 
   /// writes the projections of the centers of the sample cells, of side h <= spacing / sqrt(3),
@@ -390,9 +398,10 @@ The signed distance to the sphere of center `c` and radius `r`: |p - c| - r.
 template <typename K = CGAL::Epick>
 struct Implicit_sphere_3
 {
-  typename K::Point_3 center;
-  double radius;
+  typename K::Point_3 center;  ///< the center c
+  double radius;               ///< the radius r
 
+  /// the signed distance from `p` to the sphere, negative inside
   double operator()(const typename K::Point_3& p) const
   {
     return std::sqrt(CGAL::to_double(CGAL::squared_distance(p, center))) - radius;
@@ -408,9 +417,10 @@ circles around y, in the xz plane): sqrt((sqrt(x^2 + z^2) - R)^2 + y^2) - r.
 template <typename K = CGAL::Epick>
 struct Implicit_torus_3
 {
-  double major_radius;
-  double minor_radius;
+  double major_radius;  ///< R, the distance from the y axis to the center of the tube
+  double minor_radius;  ///< r, the radius of the tube
 
+  /// the signed distance from `p` to the torus, negative inside
   double operator()(const typename K::Point_3& p) const
   {
     const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());

@@ -42,19 +42,19 @@ A new lattice (A15, ...) is one more hole set: no stage depends on which lattice
 */
 struct Lattice_3
 {
-  typedef Eigen::Vector3d Vector;
+  typedef Eigen::Vector3d Vector; ///< an offset in the isotropic space, in units of l*
 
-  std::string name;
-  std::vector<Vector> one_ring;
-  std::vector<Vector> holes;
-  double closest_distance = 1.;   // l_closest / l*
-  double density = 1.;            // lattice points per unit cube
-  double sigma_ratio = 0.3;       // sigma = sigma_ratio * l_closest
+  std::string name;               ///< name of the lattice: `"bcc"`, `"fcc"` or `"gaussian"`
+  std::vector<Vector> one_ring;   ///< the one-ring offsets O_1..O_Nor
+  std::vector<Vector> holes;      ///< centres of the kernel's negative Gaussians (empty: no holes)
+  double closest_distance = 1.;   ///< l_closest / l*, the distance between closest lattice points
+  double density = 1.;            ///< number of lattice points per unit cube
+  double sigma_ratio = 0.3;       ///< sigma / l_closest, the width of the kernel's Gaussians
   // Number of points of a lattice patch that fills a body of volume V, boundary area A and
   // feature length L at edge length l: density V/l^3 + area_factor A/l^2 + length_factor L/l
   // (exact for a lattice-aligned cube; used to pick l* from a vertex count).
-  double area_factor = 0.;
-  double length_factor = 0.;
+  double area_factor = 0.;        ///< points per unit boundary area A / l^2 of a lattice patch
+  double length_factor = 0.;      ///< points per unit feature length L / l of a lattice patch
 
   /// sigma / l*
   double sigma() const { return sigma_ratio * closest_distance; }
@@ -65,6 +65,7 @@ struct Lattice_3
     for(const Vector& o : one_ring) r = (std::max)(r, o.norm());
     return r;
   }
+  /// `true` if the kernel has holes (false for the hole-less Gaussian kernel)
   bool has_holes() const { return !holes.empty(); }
 };
 

@@ -36,6 +36,7 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/property_map.h>
 
 #include <boost/graph/adjacency_list.hpp>
 
@@ -88,12 +89,12 @@ template <typename K = CGAL::Epick>
 class Polyhedral_lattice_domain_3
 {
 public:
-  typedef K                                Geom_traits;
-  typedef typename K::Point_3              Point_3;
-  typedef typename K::Vector_3             Vector_3;
-  typedef Boundary_projection_3<K>         Projection;
-  typedef CGAL::Surface_mesh<Point_3>      Surface_mesh;
-  typedef std::vector<Point_3>             Polyline;
+  typedef K                                Geom_traits;  ///< the kernel
+  typedef typename K::Point_3              Point_3;      ///< the point type
+  typedef typename K::Vector_3             Vector_3;     ///< the vector type
+  typedef Boundary_projection_3<K>         Projection;   ///< the result of a projection on the boundary or a feature curve (`Boundary_projection_3`)
+  typedef CGAL::Surface_mesh<Point_3>      Surface_mesh; ///< the type of the input surface
+  typedef std::vector<Point_3>             Polyline;     ///< a feature curve, as a sequence of points
 
   /// builds the domain bounded by `surface`. Throws `std::invalid_argument` (the message names
   /// the problem) if `feature_angle` is not in (0, 180] or if `surface` does not bound a volume.
@@ -112,7 +113,7 @@ public:
 
   /// \name LatticeMeshDomain_3
   /// @{
-  CGAL::Bbox_3 bbox() const { return m_data->bbox; }
+  CGAL::Bbox_3 bbox() const { return m_data->bbox; } ///< the bounding box of the surface
 
   /// the winding number of the surface about `p` is at least 1; computed (by a ray cast) only
   /// where the cell grid (below) does not tell
@@ -138,6 +139,17 @@ public:
                       CGAL::to_double(CGAL::squared_distance(p, hit.first))};
   }
 
+  /// the surface patch (from 1) of the boundary point closest to `p`: the patches are the parts
+  /// of the surface between its sharp edges (with given feature curves, its connected components)
+  int surface_patch_index(const Point_3& p) const
+  {
+    return m_data->face_patches[m_data->triangle_tree.closest_point_and_primitive(p).second.idx()];
+  }
+
+  /// the number of surface patches
+  int number_of_surface_patches() const { return m_data->number_of_patches; }
+
+  /// the number of feature curves
   std::size_t number_of_curves() const { return m_data->curves.size(); }
 
   /// the tangent is the unit direction of the closest segment, in the order of `curves()[curve]`.
@@ -159,9 +171,14 @@ public:
     return project(m_data->segment_tree, p);
   }
 
+  /// the corners: the end vertices of the feature curves (and, with given curves, the given corners)
   const std::vector<Point_3>& corners() const { return m_data->corners; }
+  /// the volume enclosed by the surface (where parts of a self-intersecting surface overlap,
+  /// they count twice: an upper bound)
   double volume() const { return m_data->volume; }
+  /// the area of the boundary (without buried faces)
   double area() const { return m_data->area; }
+  /// the total length of the feature curves
   double curves_length() const { return m_data->curves_length; }
 
   /// writes the vertices and grid points of the edges and triangles (the grid sampling of
@@ -335,6 +352,8 @@ private:
     Surface_mesh boundary;
     Triangle_tree triangle_tree;
     std::vector<Vector_3> face_normals; // of `boundary`, toward the outside
+    std::vector<int> face_patches;      // of `boundary`, from 1
+    int number_of_patches = 0;
     std::vector<Polyline> curves;
     std::vector<Point_3> corners;
     std::vector<typename K::Segment_3> segments; // curve by curve, in polyline order
@@ -368,7 +387,10 @@ private:
       });
       volume = CGAL::to_double(PMP::volume(surface));   // overlaps count twice: a bound, for the sizing
       area = CGAL::to_double(PMP::area(boundary));
-      if(given_curves) take_curves(*given_curves, *given_corners);
+      if(given_curves) {
+        take_curves(*given_curves, *given_corners);
+        label_patches(CGAL::Constant_property_map<typename Surface_mesh::Edge_index, bool>(false));
+      }
       else build_curves();
       for(std::size_t c = 0; c < curves.size(); ++c)
         for(std::size_t i = 0; i + 1 < curves[c].size(); ++i) {
@@ -480,6 +502,20 @@ private:
       corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
     }
 
+    // The surface patches: the connected components of the faces across the edges that are not
+    // `constrained`.
+    template <typename ConstrainedMap>
+    void label_patches(ConstrainedMap constrained)
+    {
+      typedef typename Surface_mesh::Face_index Face_index;
+      auto patch = boundary.template add_property_map<Face_index, std::size_t>("f:lm_patch", 0).first;
+      number_of_patches = int(CGAL::Polygon_mesh_processing::connected_components(
+          boundary, patch, CGAL::parameters::edge_is_constrained_map(constrained)));
+      face_patches.reserve(boundary.number_of_faces());
+      for(Face_index f : boundary.faces()) face_patches.push_back(int(patch[f]) + 1);
+      boundary.remove_property_map(patch);
+    }
+
     void build_curves()
     {
       typedef typename Surface_mesh::Edge_index Edge_index;
@@ -498,6 +534,7 @@ private:
       for(Edge_index e : boundary.edges())
         if(is_sharp[e])
           boost::add_edge(add_vertex(boundary.vertex(e, 0)), add_vertex(boundary.vertex(e, 1)), graph);
+      label_patches(is_sharp);
       boundary.remove_property_map(is_sharp); // keep boundary() free of our bookkeeping
 
       Polyline_collector collector{graph, curves};

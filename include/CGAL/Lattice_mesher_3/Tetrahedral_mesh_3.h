@@ -28,12 +28,15 @@ feature curve a sharp-edge particle lies on, or of the corner a fixed particle s
 template <typename Point_3>
 struct Particle_set_3
 {
-  std::vector<Point_3> points;
-  std::vector<Particle_kind> kinds;
-  std::vector<int> feature;
+  std::vector<Point_3> points;       ///< the positions of the particles
+  std::vector<Particle_kind> kinds;  ///< the constraint kind of each particle
+  std::vector<int> feature;          ///< the feature curve or corner of each particle, or -1
 
+  /// the number of particles
   std::size_t size() const { return points.size(); }
+  /// removes all the particles
   void clear() { points.clear(); kinds.clear(); feature.clear(); }
+  /// appends a particle at `p` of kind `k` on the feature curve or at the corner `f` (-1: none)
   void push_back(const Point_3& p, Particle_kind k, int f = -1)
   { points.push_back(p); kinds.push_back(k); feature.push_back(f); }
 };
@@ -44,17 +47,28 @@ A tetrahedral mesh as plain arrays (indices into `points`, 0-based).
 Every tetrahedron (a, b, c, d) is positively oriented: `CGAL::orientation(a, b, c, d)` is
 `CGAL::POSITIVE`. `boundary_faces` lists the triangles of the boundary, oriented so that their
 normal points out of the mesh. `vertex_kinds`, when not empty, gives each vertex's particle kind.
+`subdomains` and `boundary_patches`, when not empty, give each tetrahedron's subdomain index and
+each boundary face's surface patch index (from 1, the references of the Medit and Gmsh
+outputs): `Lattice_particle_mesher_3::tetrahedralize()` and `lattice_mesh_3()` fill them with the
+domain's (a `Polyhedral_lattice_domain_3`'s patches are the parts of the surface between its
+sharp edges); a stage that changes the tetrahedra or the boundary leaves them as they were, to be
+filled again.
 */
 template <typename Point_3>
 struct Tetrahedral_mesh_3
 {
-  std::vector<Point_3> points;
-  std::vector<std::array<int, 4> > tets;
-  std::vector<std::array<int, 3> > boundary_faces;
-  std::vector<Particle_kind> vertex_kinds;
+  std::vector<Point_3> points;                      ///< the vertices
+  std::vector<std::array<int, 4> > tets;            ///< the tetrahedra, positively oriented
+  std::vector<std::array<int, 3> > boundary_faces;  ///< the boundary triangles, oriented outward
+  std::vector<Particle_kind> vertex_kinds;          ///< the particle kind of each vertex, or empty
+  std::vector<int> subdomains;                      ///< the subdomain index of each tetrahedron, or empty
+  std::vector<int> boundary_patches;                ///< the surface patch index (from 1) of each boundary face, or empty
 };
 
 namespace internal {
+
+// The label of element i: labels[i], or 1 without labels.
+inline int label(const std::vector<int>& labels, std::ptrdiff_t i) { return labels.empty() ? 1 : labels[std::size_t(i)]; }
 
 // Drops the vertices flagged in `removed`, which no tetrahedron or boundary face uses any more,
 // keeping the order of the others, and renumbers the tetrahedra and the boundary faces.

@@ -36,9 +36,9 @@ domain may have several bodies, a particle set may keep particles that no tetrah
 */
 struct Mesh_validity_report
 {
-  std::size_t vertices = 0;
-  std::size_t tets = 0;
-  std::size_t boundary_faces = 0;
+  std::size_t vertices = 0;                               ///< number of vertices of the mesh
+  std::size_t tets = 0;                                   ///< number of tetrahedra of the mesh
+  std::size_t boundary_faces = 0;                         ///< number of boundary faces of the mesh
   std::size_t number_of_bad_indices = 0;                  ///< tets and boundary faces with an index out of range
   std::size_t number_of_bad_vertex_kinds = 0;             ///< 1 if `vertex_kinds` is neither empty nor one per point
   std::size_t number_of_degenerate_tets = 0;              ///< tets with a repeated vertex

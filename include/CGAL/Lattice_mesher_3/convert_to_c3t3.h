@@ -12,6 +12,7 @@
 
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/make_lattice_domain_3.h>
+#include <CGAL/Lattice_mesher_3/internal/domain_indices.h>
 
 #include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
@@ -48,35 +49,6 @@ using Mesh_complex_3 = CGAL::Mesh_complex_3_in_triangulation_3<
   typename CGAL::Mesh_triangulation_3<CGAL::Labeled_mesh_domain_3<K> >::type, int, int>;
 
 namespace internal {
-
-template <typename T> struct Is_pair : std::false_type {};
-template <typename A, typename B> struct Is_pair<std::pair<A, B> > : std::true_type {};
-
-// The indices of a LatticeMeshDomain_3's mesh: one subdomain (1), one surface patch (the
-// pair (1, 0) between it and the outside, or 1), curve c + 1, corners 1, 2, ... by position.
-template <typename C3t3, typename LatticeDomain>
-struct Lattice_domain_indices
-{
-  typedef typename C3t3::Subdomain_index Subdomain_index;
-  typedef typename C3t3::Surface_patch_index Surface_patch_index;
-  const LatticeDomain& domain;
-
-  template <typename Point_3> Subdomain_index subdomain(const Point_3&) const { return Subdomain_index(1); }
-  template <typename Point_3> Surface_patch_index patch(const Point_3&, const Point_3&) const
-  {
-    if constexpr(Is_pair<Surface_patch_index>::value) return Surface_patch_index(1, 0);
-    else return Surface_patch_index(1);
-  }
-  typename C3t3::Curve_index curve(int c) const { return typename C3t3::Curve_index(c + 1); }
-  template <typename Point_3> typename C3t3::Corner_index corner(const Point_3& p) const
-  {
-    const auto& corners = domain.corners();
-    std::size_t best = 0;
-    for(std::size_t k = 1; k < corners.size(); ++k)
-      if(CGAL::squared_distance(p, corners[k]) < CGAL::squared_distance(p, corners[best])) best = k;
-    return typename C3t3::Corner_index(best + 1);
-  }
-};
 
 // The indices of a Mesh_3 domain's own: the subdomain at a cell's centroid, the surface patch
 // where the segment across a boundary facet meets the surface, the curves in the order of
@@ -120,10 +92,8 @@ struct Mesh_domain_indices
   }
   typename C3t3::Corner_index corner(const Point_3& p) const
   {
-    std::size_t best = 0;
-    for(std::size_t k = 1; k < corners.size(); ++k)
-      if(CGAL::squared_distance(p, corners[k].second) < CGAL::squared_distance(p, corners[best].second)) best = k;
-    return corners.empty() ? typename C3t3::Corner_index(1) : corners[best].first;
+    if(corners.empty()) return typename C3t3::Corner_index(1);
+    return corners[nearest(p, corners, [](const auto& c) { return c.second; })].first;
   }
 };
 
@@ -276,7 +246,8 @@ mesh generator would: its triangulation is the regular triangulation of the mesh
 zero weights (their Delaunay triangulation, valid for its type), whose cells in the complex are
 the mesh's tetrahedra and the cells whose centroid is inside the mesh (subdomain 1): where flips
 made the mesh's connectivity differ from Delaunay's, the cells are Delaunay's. The facets between
-a cell in the complex and one outside are in the complex (surface patch 1, or the pair (1, 0)),
+a cell in the complex and one outside are in the complex (with the domain's surface patch index
+if `C3t3`'s are integers, the pair (1, 0) if they are pairs),
 the mesh's edges along a feature curve are (curve c + 1), and the corners (1, 2, ... in the
 order of `domain.corners()`); each vertex has the dimension and index of the lowest-dimensional
 part it is on. Last, Mesh_3's sliver exuder (`CGAL::exude_mesh_3()`) weights the vertices of the

@@ -83,9 +83,12 @@ Flip_options flip_options(const NamedParameters& np)
 /// What `flip_tetrahedra()` did.
 struct Flip_result
 {
-  std::size_t flips23 = 0, flips32 = 0, edge_removals = 0;   ///< edge_removals: rings of 4 and more
+  /// number of 2-3 flips
+  std::size_t flips23 = 0, flips32 = 0, edge_removals = 0;   ///< number of edge removals (rings of 4 and more tetrahedra)
+  /*! \var flips32
+      \brief number of 3-2 flips */
   std::size_t boundary_flips = 0;   ///< 2-2 flips of flat boundary faces, only to remove inverted tetrahedra
-  std::size_t total() const { return flips23 + flips32 + edge_removals + boundary_flips; }
+  std::size_t total() const { return flips23 + flips32 + edge_removals + boundary_flips; } ///< the total number of flips and edge removals
 };
 
 /*!

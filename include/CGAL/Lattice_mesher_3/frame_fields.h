@@ -35,10 +35,12 @@ template <typename GT>
 class Constant_frame_field_3
 {
 public:
-  typedef typename GT::Point_3  Point_3;
-  typedef typename GT::Matrix_3 Matrix_3;
+  typedef typename GT::Point_3  Point_3;  ///< the point type
+  typedef typename GT::Matrix_3 Matrix_3; ///< the frame type, a 3x3 matrix
 
+  /// constructs the field whose frame is `t` everywhere
   explicit Constant_frame_field_3(const Matrix_3& t = Matrix_3::Identity()) : t_(t) {}
+  /// the frame `t`, at every point
   const Matrix_3& frame(const Point_3&) const { return t_; }
 
 private:
@@ -53,10 +55,12 @@ template <typename GT, typename F>
 class Function_frame_field_3
 {
 public:
-  typedef typename GT::Point_3  Point_3;
-  typedef typename GT::Matrix_3 Matrix_3;
+  typedef typename GT::Point_3  Point_3;  ///< the point type
+  typedef typename GT::Matrix_3 Matrix_3; ///< the frame type, a 3x3 matrix
 
+  /// constructs the field from the callable `f`
   explicit Function_frame_field_3(F f) : f_(std::move(f)) {}
+  /// the frame T(p) = `f(p)`
   Matrix_3 frame(const Point_3& p) const { return f_(p); }
 
 private:
@@ -78,10 +82,12 @@ template <typename GT>
 class Rotation_y_frame_field_3
 {
 public:
-  typedef typename GT::Point_3  Point_3;
-  typedef typename GT::Matrix_3 Matrix_3;
+  typedef typename GT::Point_3  Point_3;  ///< the point type
+  typedef typename GT::Matrix_3 Matrix_3; ///< the frame type, a 3x3 matrix
 
+  /// constructs the field whose cube edges have length `scale`
   explicit Rotation_y_frame_field_3(double scale = 1.) : scale_(scale) {}
+  /// the frame T(p), whose columns are the lattice cube edges at p
   Matrix_3 frame(const Point_3& p) const
   {
     const double x = CGAL::to_double(p.x()), z = CGAL::to_double(p.z());
@@ -112,9 +118,10 @@ template <typename GT>
 class Planar_layer_frame_field_3
 {
 public:
-  typedef typename GT::Point_3  Point_3;
-  typedef typename GT::Matrix_3 Matrix_3;
+  typedef typename GT::Point_3  Point_3;  ///< the point type
+  typedef typename GT::Matrix_3 Matrix_3; ///< the frame type, a 3x3 matrix
 
+  /// the frame T(p), whose columns are the lattice cube edges at p
   Matrix_3 frame(const Point_3& p) const
   {
     Matrix_3 t = Matrix_3::Identity();
@@ -141,9 +148,10 @@ template <typename GT>
 class Cylindrical_layer_frame_field_3
 {
 public:
-  typedef typename GT::Point_3  Point_3;
-  typedef typename GT::Matrix_3 Matrix_3;
+  typedef typename GT::Point_3  Point_3;  ///< the point type
+  typedef typename GT::Matrix_3 Matrix_3; ///< the frame type, a 3x3 matrix
 
+  /// the frame T(p), whose columns are the lattice cube edges at p
   Matrix_3 frame(const Point_3& p) const
   {
     const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());

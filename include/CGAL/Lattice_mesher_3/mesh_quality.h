@@ -47,10 +47,10 @@ the largest dihedral angle).
 */
 struct Quality_statistics
 {
-  double min = 0.;
-  double max = 0.;
-  double mean = 0.;
-  double std = 0.;
+  double min = 0.;   ///< the smallest value
+  double max = 0.;   ///< the largest value
+  double mean = 0.;  ///< the mean value
+  double std = 0.;   ///< the population standard deviation
 };
 
 /*!
@@ -73,16 +73,16 @@ measured; `seconds` is filled by the caller.
 */
 struct Mesh_quality_3
 {
-  std::size_t vertices = 0;
-  std::size_t tets = 0;
+  std::size_t vertices = 0;      ///< number of vertices of the mesh
+  std::size_t tets = 0;          ///< number of tetrahedra of the mesh
   Quality_statistics theta_min;  ///< of the per-tetrahedron smallest dihedral angle
   Quality_statistics theta_max;  ///< of the per-tetrahedron largest dihedral angle
-  Quality_statistics rho;
-  Quality_statistics kappa;
+  Quality_statistics rho;        ///< of the per-tetrahedron edge-radius ratio (`Tetrahedron_quality_3::rho`)
+  Quality_statistics kappa;      ///< of the per-tetrahedron volume-area ratio (`Tetrahedron_quality_3::kappa`)
   Quality_statistics epsilon;    ///< edge alignment error, over the unique edges
   std::size_t below20 = 0;       ///< tetrahedra with theta_min < 20 degrees
   std::size_t below40 = 0;       ///< tetrahedra with theta_min < 40 degrees
-  double hausdorff = -1.;
+  double hausdorff = -1.;        ///< symmetric Hausdorff distance between the mesh boundary and the domain surface (`boundary_distances()`), in the domain's length unit; negative when not measured
   double hausdorff_over_size = -1.;  ///< `Boundary_distances_3::over_size`, negative when not measured
   double edge_length = 0.;       ///< the l* the mesh was made for; 0 when not known (filled by the caller)
   struct Timings
@@ -90,7 +90,7 @@ struct Mesh_quality_3
     double optimize = 0.;
     double mesh = 0.;
     double total = 0.;
-  } seconds;
+  } seconds;  ///< running times in seconds of the particle optimization (`optimize`), the tetrahedralization and its improvement (`mesh`) and the whole run (`total`); filled by the caller, 0 otherwise
 };
 
 namespace internal {

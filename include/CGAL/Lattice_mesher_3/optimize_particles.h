@@ -34,10 +34,10 @@ namespace Lattice_mesher_3 {
 /// What a round did.
 struct Optimization_result
 {
-  int iterations = 0;
+  int iterations = 0;     ///< number of L-BFGS iterations
   int restarts = 0;       ///< line-search failures recovered by restarting L-BFGS
   double energy = 0.;     ///< total GHK energy over interacting pairs, at the end
-  double gradient_rms = 0.;
+  double gradient_rms = 0.; ///< root mean square over the movable particles of the energy gradient, at the end
 };
 
 namespace internal {

@@ -57,8 +57,8 @@ template <typename K>
 class Graded_sizing_field_3
 {
 public:
-  typedef typename K::Point_3 Point_3;
-  typedef std::pair<Point_3, double> Sample;
+  typedef typename K::Point_3 Point_3; ///< the point type
+  typedef std::pair<Point_3, double> Sample; ///< a sample: a point and the largest edge length there
 
   /// the constant field `max_size`
   explicit Graded_sizing_field_3(double max_size = std::numeric_limits<double>::infinity())
@@ -113,7 +113,9 @@ public:
     return h;
   }
 
+  /// the largest size: the field never exceeds it (infinite: unbounded)
   double max_size() const { return m_max; }
+  /// the largest slope of the field, in size per unit length
   double grading() const { return m_grading; }
   /// the smallest sample size (`max_size()` without samples)
   double min_size() const
@@ -122,6 +124,7 @@ public:
     for(const Size_sample& s : m_grid->samples) h = (std::min)(h, s.size);
     return h;
   }
+  /// number of samples kept (those whose size is below `max_size()`)
   std::size_t number_of_samples() const { return m_grid->samples.size(); }
 
 private:
@@ -389,11 +392,12 @@ eight directions of the tangent plane; -1 at a scale that reaches a feature curv
 template <typename K>
 struct Deviation_sample_3
 {
-  static constexpr int scales = 4;
+  static constexpr int scales = 4;  ///< number of scales at which the deviation is measured
   typename K::Point_3 point;        ///< on the surface
   double largest_scale = 0.;        ///< L
   std::array<double, scales> deviation{}; ///< at L, L/2, L/4, L/8
 
+  /// the scale of `deviation[k]`: L / 2^k
   double scale(int k) const { return std::ldexp(largest_scale, -k); }
 };
 
@@ -520,8 +524,8 @@ template <typename FrameField, typename Sizing>
 class Sized_frame_field_3
 {
 public:
-  typedef typename FrameField::Point_3 Point_3;
-  typedef typename FrameField::Matrix_3 Matrix_3;
+  typedef typename FrameField::Point_3 Point_3;   ///< the point type
+  typedef typename FrameField::Matrix_3 Matrix_3; ///< the frame type, a 3x3 matrix
 
   /// `min_size`: the size is never taken below it
   Sized_frame_field_3(const FrameField& field, const Sizing& sizing, double edge_length, double min_size = 0.)
@@ -533,6 +537,7 @@ public:
       throw std::invalid_argument("Sized_frame_field_3: the smallest size must not be negative");
   }
 
+  /// the frame T(p) = s(p) T0(p), whose columns are the lattice cube edges at p
   Matrix_3 frame(const Point_3& p) const
   {
     const Matrix_3 t = m_field.frame(p);
@@ -542,8 +547,11 @@ public:
     return s < 1. ? Matrix_3(s * t) : t;
   }
 
+  /// the lattice edge length l, in the isotropic space of `field()`
   double edge_length() const { return m_length; }
+  /// the unscaled frame field T0
   const FrameField& field() const { return m_field; }
+  /// the sizing field h
   const Sizing& sizing() const { return m_sizing; }
 
 private:

@@ -10,6 +10,7 @@
 #ifndef CGAL_LATTICE_MESHER_3_TETRAHEDRALIZE_PARTICLES_H
 #define CGAL_LATTICE_MESHER_3_TETRAHEDRALIZE_PARTICLES_H
 
+#include <CGAL/Lattice_mesher_traits_3.h>
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/flip_tetrahedra.h>
 #include <CGAL/Lattice_mesher_3/internal/field_sampling.h>
@@ -393,7 +394,7 @@ already conforms to the boundary; CGAL's triangulation is exact and robust on de
   \cgalParamNBegin{geom_traits}
     \cgalParamDescription{the traits object whose predicates decide the Delaunay tetrahedralization}
     \cgalParamType{a model of `DelaunayTriangulationTraits_3` with the point type of `Domain::Geom_traits`}
-    \cgalParamDefault{`Domain::Geom_traits()`}
+    \cgalParamDefault{`Lattice_mesher_traits_3<Domain::Geom_traits>()`, as `Lattice_particle_mesher_3`'s}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
@@ -406,7 +407,7 @@ Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_
                                                      const NamedParameters& np = parameters::default_values())
 {
   typedef typename internal_np::Lookup_named_param_def<internal_np::geom_traits_t, NamedParameters,
-                                                       typename Domain::Geom_traits>::type GT;
+                                                       Lattice_mesher_traits_3<typename Domain::Geom_traits> >::type GT;
   return internal::tetrahedralize_particles(ps, domain, field, internal::tetrahedralization_options(np),
                                             parameters::choose_parameter<GT>(parameters::get_parameter(np, internal_np::geom_traits)));
 }

@@ -33,7 +33,8 @@ namespace Lattice_mesher_3 {
 Writes `mesh` in the ASCII Medit format (`.mesh`, as `CGAL::IO::write_MEDIT`): the vertices,
 the boundary faces as `Triangles` and the tetrahedra, with 1-based indices and full double
 precision (`MeshVersionFormatted 2`, which tells readers the coordinates are doubles). The reference of a vertex is its particle kind + 1 (0 when `mesh.vertex_kinds` is
-empty), so that `read_medit()` restores the kinds; triangles and tetrahedra have reference 1.
+empty), so that `read_medit()` restores the kinds; a triangle's is its surface patch index and a
+tetrahedron's its subdomain index (`boundary_patches`, `subdomains`; 1 where these are empty).
 
 \throws std::runtime_error if the stream fails
 */
@@ -49,11 +50,15 @@ void write_medit(std::ostream& os, const Tetrahedral_mesh_3<Point_3>& mesh)
     os << mesh.points[i].x() << ' ' << mesh.points[i].y() << ' ' << mesh.points[i].z() << ' ' << ref << '\n';
   }
   os << "Triangles\n" << mesh.boundary_faces.size() << '\n';
-  for(const std::array<int, 3>& f : mesh.boundary_faces)
-    os << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << " 1\n";
+  for(std::size_t k = 0; k < mesh.boundary_faces.size(); ++k) {
+    const std::array<int, 3>& f = mesh.boundary_faces[k];
+    os << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << ' ' << internal::label(mesh.boundary_patches, std::ptrdiff_t(k)) << '\n';
+  }
   os << "Tetrahedra\n" << mesh.tets.size() << '\n';
-  for(const std::array<int, 4>& t : mesh.tets)
-    os << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << ' ' << t[3] + 1 << " 1\n";
+  for(std::size_t k = 0; k < mesh.tets.size(); ++k) {
+    const std::array<int, 4>& t = mesh.tets[k];
+    os << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << ' ' << t[3] + 1 << ' ' << internal::label(mesh.subdomains, std::ptrdiff_t(k)) << '\n';
+  }
   os << "End\n";
   os.precision(precision);
   if(!os) throw std::runtime_error("write_medit(): the output stream failed");
@@ -156,7 +161,8 @@ inline int medit_skipped_entry_size(const std::string& keyword)
 /*!
 \ingroup PkgLatticeMesher3IO
 Reads an ASCII Medit file (as written by `write_medit()` or `CGAL::IO::write_MEDIT`) into
-`mesh`: `Vertices`, `Triangles` (into `boundary_faces`, as given) and `Tetrahedra` (as given).
+`mesh`: `Vertices`, `Triangles` (into `boundary_faces`, as given, their references into
+`boundary_patches`) and `Tetrahedra` (as given, their references into `subdomains`).
 The other sections of 3D meshes (`Edges`, `Corners`, `Ridges`, `Required*`, ...) are skipped,
 as are comments ('#'). `vertex_kinds` is filled when every vertex reference is a particle kind
 + 1, as `write_medit()` writes them, and left empty otherwise. `mesh` is only modified on success.
@@ -198,9 +204,9 @@ void read_medit(std::istream& is, Tetrahedral_mesh_3<Point_3>& mesh)
         std::array<int, 4> v;
         for(int k = 0; k < (triangles ? 3 : 4); ++k)
           v[k] = int(in.read_integer(keyword + " (vertex index)", 1, (long long)(result.points.size()))) - 1;
-        in.read_reference(keyword);
-        if(triangles) result.boundary_faces.push_back({ v[0], v[1], v[2] });
-        else result.tets.push_back(v);
+        const long long ref = in.read_reference(keyword);
+        if(triangles) { result.boundary_faces.push_back({ v[0], v[1], v[2] }); result.boundary_patches.push_back(int(ref)); }
+        else { result.tets.push_back(v); result.subdomains.push_back(int(ref)); }
       }
     } else if(const int size = internal::medit_skipped_entry_size(keyword)) {
       const long long n = in.read_integer("the number of " + keyword, 0, max_count);
