@@ -1,0 +1,198 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Lattice_mesher_3 developers
+
+#ifndef CGAL_LATTICE_MESHER_3_INTERNAL_OCTAHEDRAL_FRAMES_H
+#define CGAL_LATTICE_MESHER_3_INTERNAL_OCTAHEDRAL_FRAMES_H
+
+// Octahedral frames {+-a1, +-a2, +-a3} as degree-4 spherical harmonics: the band-4 part of
+// f(u) = sum_k (a_k . u)^4 in the 9 real orthonormal harmonics of degree 4 (index m + 4,
+// m = -4..4, sin(|m| phi) for m < 0, no Condon-Shortley phase), the representation of the cross
+// field methods of Huang et al. 2011, Ray et al. 2016 and Palmer et al. 2020. A frame is a point
+// of the octahedral variety {D(R) q0}, where q0 is the axis-aligned frame and D(R) the band-4
+// Wigner matrix of the rotation R: the coefficients of u -> f(R^T u).
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace CGAL {
+namespace Lattice_mesher_3 {
+namespace internal {
+
+typedef Eigen::Matrix<double, 9, 1> Sh9;
+typedef Eigen::Matrix<double, 9, 9> Sh9_matrix;
+
+// The axis-aligned frame: (0, 0, 0, 0, sqrt(7/12), 0, 0, 0, sqrt(5/12)).
+inline Sh9 axis_aligned_frame()
+{
+  Sh9 q = Sh9::Zero();
+  q[4] = std::sqrt(7. / 12.);
+  q[8] = std::sqrt(5. / 12.);
+  return q;
+}
+
+// The 9 harmonics at u (homogeneous polynomials, on the unit sphere for |u| = 1).
+inline Sh9 degree_4_harmonics(const Eigen::Vector3d& u)
+{
+  const double x = u[0], y = u[1], z = u[2], r2 = u.squaredNorm(), pi = 3.14159265358979323846;
+  Sh9 y9;
+  y9[0] = .75 * std::sqrt(35. / pi) * x * y * (x * x - y * y);
+  y9[1] = .75 * std::sqrt(35. / (2. * pi)) * y * z * (3. * x * x - y * y);
+  y9[2] = .75 * std::sqrt(5. / pi) * x * y * (7. * z * z - r2);
+  y9[3] = .75 * std::sqrt(5. / (2. * pi)) * y * z * (7. * z * z - 3. * r2);
+  y9[4] = 3. / 16. * std::sqrt(1. / pi) * (35. * z * z * z * z - 30. * z * z * r2 + 3. * r2 * r2);
+  y9[5] = .75 * std::sqrt(5. / (2. * pi)) * x * z * (7. * z * z - 3. * r2);
+  y9[6] = 3. / 8. * std::sqrt(5. / pi) * (x * x - y * y) * (7. * z * z - r2);
+  y9[7] = .75 * std::sqrt(35. / (2. * pi)) * x * z * (x * x - 3. * y * y);
+  y9[8] = 3. / 16. * std::sqrt(35. / pi) * (x * x * x * x - 6. * x * x * y * y + y * y * y * y);
+  return y9;
+}
+
+// The generators L_x, L_y, L_z of the action: D(exp([w]x)) = exp(w_x L_x + w_y L_y + w_z L_z).
+inline const std::array<Sh9_matrix, 3>& rotation_generators()
+{
+  static const std::array<Sh9_matrix, 3> generators = [] {
+    std::array<Sh9_matrix, 3> g;
+    for(Sh9_matrix& m : g) m.setZero();
+    const double s2 = std::sqrt(2.), s72 = std::sqrt(3.5), h = 3. / std::sqrt(2.), s10 = std::sqrt(10.);
+    auto set = [](Sh9_matrix& m, int i, int j, double v) { m(i, j) = v; m(j, i) = -v; };
+    set(g[0], 0, 7, -s2);  set(g[0], 1, 6, -s72); set(g[0], 1, 8, -s2); set(g[0], 2, 5, -h);
+    set(g[0], 2, 7, -s72); set(g[0], 3, 4, -s10); set(g[0], 3, 6, -h);
+    set(g[1], 0, 1, s2);   set(g[1], 1, 2, s72);  set(g[1], 2, 3, h);   set(g[1], 4, 5, -s10);
+    set(g[1], 5, 6, -h);   set(g[1], 6, 7, -s72); set(g[1], 7, 8, -s2);
+    for(int i = 0; i < 4; ++i) set(g[2], i, 8 - i, double(4 - i));
+    return g;
+  }();
+  return generators;
+}
+
+// D(R_z(a)): rotations by k a of the pairs (i, 8 - i), k = 4 - i.
+inline Sh9_matrix wigner_z(double a)
+{
+  Sh9_matrix d = Sh9_matrix::Zero();
+  d(4, 4) = 1.;
+  for(int i = 0; i < 4; ++i) {
+    const double c = std::cos((4 - i) * a), s = std::sin((4 - i) * a);
+    d(i, i) = c;        d(i, 8 - i) = s;
+    d(8 - i, i) = -s;   d(8 - i, 8 - i) = c;
+  }
+  return d;
+}
+
+// D(R_x(pi / 2)).
+inline const Sh9_matrix& wigner_x90()
+{
+  static const Sh9_matrix x90 = [] {
+    Sh9_matrix m = Sh9_matrix::Zero();
+    const double s2 = std::sqrt(2.), s7 = std::sqrt(7.), s14 = std::sqrt(14.), s5 = std::sqrt(5.), s35 = std::sqrt(35.);
+    m(0, 5) = s14 / 4.;  m(0, 7) = -s2 / 4.;
+    m(1, 1) = -.75;      m(1, 3) = s7 / 4.;
+    m(2, 5) = s2 / 4.;   m(2, 7) = s14 / 4.;
+    m(3, 1) = s7 / 4.;   m(3, 3) = .75;
+    m(4, 4) = 3. / 8.;   m(4, 6) = s5 / 4.;   m(4, 8) = s35 / 8.;
+    m(5, 0) = -s14 / 4.; m(5, 2) = -s2 / 4.;
+    m(6, 4) = s5 / 4.;   m(6, 6) = .5;        m(6, 8) = -s7 / 4.;
+    m(7, 0) = s2 / 4.;   m(7, 2) = -s14 / 4.;
+    m(8, 4) = s35 / 8.;  m(8, 6) = -s7 / 4.;  m(8, 8) = 1. / 8.;
+    return m;
+  }();
+  return x90;
+}
+
+// D(R) from the ZYZ Euler angles of R = R_z(alpha) R_y(beta) R_z(gamma), with
+// D(R_y(beta)) = X90^T D(R_z(beta)) X90.
+inline Sh9_matrix wigner(const Eigen::Matrix3d& r)
+{
+  const double beta = std::acos((std::max)(-1., (std::min)(1., r(2, 2))));
+  double alpha, gamma = 0.;
+  if(std::abs(std::sin(beta)) > 1e-12) {
+    alpha = std::atan2(r(1, 2), r(0, 2));
+    gamma = std::atan2(r(2, 1), -r(2, 0));
+  }
+  else alpha = r(2, 2) > 0. ? std::atan2(r(1, 0), r(0, 0)) : std::atan2(-r(1, 0), -r(0, 0));
+  const Sh9_matrix& x90 = wigner_x90();
+  return wigner_z(alpha) * x90.transpose() * wigner_z(beta) * x90 * wigner_z(gamma);
+}
+
+// The frame whose axes are the columns of the rotation r.
+inline Sh9 frame_coefficients(const Eigen::Matrix3d& r) { return wigner(r) * axis_aligned_frame(); }
+
+// The rotation nearest to q on the octahedral variety (the Euclidean projection of q / |q|):
+// Newton's method on SO(3), perturbing R on the left, from five seeds (the identity, pi / 4 about
+// x, y and z, and pi / 4 about (1, 1, 0)), the best of the five (Ray et al.'s seeds; Newton with
+// the best seed lands in the global optimum more often than gradient ascent from the closest).
+// Returns the rotation, one of the 24 that represent the frame.
+inline Eigen::Matrix3d nearest_frame_rotation(const Sh9& q)
+{
+  const double norm = q.norm();
+  if(!(norm > 0.)) return Eigen::Matrix3d::Identity();
+  const Sh9 target = q / norm;
+  const std::array<Sh9_matrix, 3>& l = rotation_generators();
+  const Sh9 q0 = axis_aligned_frame();
+  const double quarter = 0.78539816339744830962;
+  const std::array<Eigen::Matrix3d, 5> seeds = {{
+    Eigen::Matrix3d::Identity(),
+    Eigen::AngleAxisd(quarter, Eigen::Vector3d::UnitX()).toRotationMatrix(),
+    Eigen::AngleAxisd(quarter, Eigen::Vector3d::UnitY()).toRotationMatrix(),
+    Eigen::AngleAxisd(quarter, Eigen::Vector3d::UnitZ()).toRotationMatrix(),
+    Eigen::AngleAxisd(quarter, Eigen::Vector3d(1., 1., 0.).normalized()).toRotationMatrix() }};
+  Eigen::Matrix3d best = Eigen::Matrix3d::Identity();
+  double best_dot = -2.;
+  for(const Eigen::Matrix3d& seed : seeds) {
+    Eigen::Matrix3d r = seed;
+    for(int it = 0; it < 100; ++it) {
+      const Sh9 a = wigner(r) * q0;
+      Eigen::Vector3d g;
+      Eigen::Matrix3d h;
+      std::array<Sh9, 3> la;
+      for(int k = 0; k < 3; ++k) { la[k] = l[k] * a; g[k] = target.dot(la[k]); }
+      for(int k = 0; k < 3; ++k)
+        for(int m = 0; m < 3; ++m) h(k, m) = .5 * (target.dot(l[k] * la[m]) + target.dot(l[m] * la[k]));
+      if(g.norm() < 1e-12) break;
+      // a Newton step toward the maximum where the Hessian is negative definite, else a
+      // gradient step (Ray et al.'s 1/8)
+      Eigen::Vector3d w = g / 8.;
+      Eigen::LLT<Eigen::Matrix3d> llt(-h);
+      if(llt.info() == Eigen::Success) w = llt.solve(g);
+      if(w.norm() > .5) w *= .5 / w.norm();
+      r = Eigen::AngleAxisd(w.norm(), w.norm() > 0. ? Eigen::Vector3d(w / w.norm()) : Eigen::Vector3d::UnitX()).toRotationMatrix() * r;
+    }
+    const double dot = target.dot(wigner(r) * q0);
+    if(dot > best_dot) { best_dot = dot; best = r; }
+  }
+  return best;
+}
+
+// The rotation of the frame nearest to q among those with an axis along the unit vector n:
+// R_n R_z(theta), R_n taking z to n, theta = atan2(p_0, p_8) / 4 with p = D(R_n)^T q.
+inline Eigen::Matrix3d nearest_aligned_frame_rotation(const Sh9& q, const Eigen::Vector3d& n)
+{
+  const Eigen::Matrix3d rn = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), n).toRotationMatrix();
+  const Sh9 p = wigner(rn).transpose() * q;
+  const double theta = (p[0] == 0. && p[8] == 0.) ? 0. : .25 * std::atan2(p[0], p[8]);
+  return rn * Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+}
+
+// The angle (degrees) between v and the nearest axis of the frame of rotation r.
+inline double angle_to_nearest_axis(const Eigen::Matrix3d& r, const Eigen::Vector3d& v)
+{
+  const Eigen::Vector3d w = (r.transpose() * v).cwiseAbs();
+  int k = 0;
+  w.maxCoeff(&k);
+  // atan2 of the parts across and along the axis: exact near 0, where acos is not
+  return std::atan2(std::hypot(w[(k + 1) % 3], w[(k + 2) % 3]), w[k]) * 180. / 3.14159265358979323846;
+}
+
+} // namespace internal
+} // namespace Lattice_mesher_3
+} // namespace CGAL
+
+#endif // CGAL_LATTICE_MESHER_3_INTERNAL_OCTAHEDRAL_FRAMES_H
