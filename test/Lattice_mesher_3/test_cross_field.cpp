@@ -9,6 +9,11 @@
 // projection onto the frames and onto the frames with an axis along a normal.
 
 #include <CGAL/Lattice_mesher_3/internal/octahedral_frames.h>
+#include <CGAL/Lattice_mesher_3/internal/cross_field_solver.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/lattice_mesh_3.h>
+#include <CGAL/Lattice_mesher_3/Implicit_lattice_domain_3.h>
+#include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
 
 #include <gtest/gtest.h>
 #include <unsupported/Eigen/MatrixFunctions>
@@ -132,6 +137,60 @@ TEST(Octahedral_frames, AlignedProjectionHasAnAxisAlongTheNormal)
     const Eigen::Matrix3d a = LMi::nearest_aligned_frame_rotation(LMi::frame_coefficients(r), r.col(1));
     for(int k = 0; k < 3; ++k) EXPECT_LT(LMi::angle_to_nearest_axis(a, r.col(k)), 1e-6);
   }
+}
+
+typedef CGAL::Epick K;
+typedef CGAL::Lattice_mesher_3::Constant_frame_field_3<CGAL::Lattice_mesher_traits_3<K> > Identity;
+
+// The largest angle (degrees) between an axis of r and the nearest axis of s.
+double frame_angle(const Eigen::Matrix3d& r, const Eigen::Matrix3d& s)
+{
+  double worst = 0.;
+  for(int k = 0; k < 3; ++k) worst = (std::max)(worst, LMi::angle_to_nearest_axis(s, r.col(k)));
+  return worst;
+}
+
+// On a cube, whose creases and corners hold the whole frame, the smooth field is the identity
+// (up to the cube's symmetries) everywhere; its energy falls across the iterations.
+TEST(Cross_field, CubeFieldIsTheIdentity)
+{
+  namespace LM = CGAL::Lattice_mesher_3;
+  const LM::Polyhedral_lattice_domain_3<K> cube(LM::make_cube_surface_3<K>(0., 1.));
+  const LM::Tetrahedral_mesh_3<K::Point_3> mesh = CGAL::lattice_mesh_3(cube, Identity(), CGAL::parameters::edge_length(0.2));
+  const std::vector<LMi::Frame_constraint> constraints = LMi::boundary_frame_constraints(mesh, cube);
+  std::size_t full = 0;
+  for(const LMi::Frame_constraint& c : constraints) full += c.kind == LMi::Frame_constraint::FULL;
+  EXPECT_GT(full, 8u);
+  const LMi::Cross_field_result field = LMi::Cross_field_solver(mesh, constraints).solve(20);
+  double worst = 0.;
+  for(const Eigen::Matrix3d& r : field.rotations) worst = (std::max)(worst, frame_angle(r, Eigen::Matrix3d::Identity()));
+  EXPECT_LT(worst, 1.);
+  ASSERT_GE(field.energies.size(), 1u);
+  EXPECT_LT(field.energies.back(), 1e-6);
+  std::cout << "  cube: " << mesh.points.size() << " vertices, largest angle to the identity " << worst << " degrees\n";
+}
+
+// On a sphere every boundary frame has an axis along the normal, and the MBO iterations lower
+// the energy of the initial projection by a tenth at least.
+TEST(Cross_field, SphereFieldIsAlignedWithTheNormal)
+{
+  namespace LM = CGAL::Lattice_mesher_3;
+  const LM::Implicit_lattice_domain_3<K, LM::Implicit_sphere_3<K> > ball(LM::Implicit_sphere_3<K>{ K::Point_3(0., 0., 0.), 1. },
+                                                                         CGAL::Bbox_3(-1, -1, -1, 1, 1, 1));
+  const LM::Tetrahedral_mesh_3<K::Point_3> mesh = CGAL::lattice_mesh_3(ball, Identity(), CGAL::parameters::edge_length(0.25));
+  const LMi::Cross_field_result field = LMi::Cross_field_solver(mesh, LMi::boundary_frame_constraints(mesh, ball)).solve(60);
+  double worst = 0.;
+  std::vector<char> on_boundary(mesh.points.size(), 0);
+  for(const auto& f : mesh.boundary_faces) for(int v : f) on_boundary[std::size_t(v)] = 1;
+  for(std::size_t v = 0; v < mesh.points.size(); ++v)
+    if(on_boundary[v]) worst = (std::max)(worst, LMi::angle_to_nearest_axis(field.rotations[v], LMi::to_eigen(mesh.points[v])));
+  EXPECT_LT(worst, 2.);
+  ASSERT_GE(field.energies.size(), 2u);
+  EXPECT_LT(field.energies.back(), 0.9 * field.energies.front());
+  for(std::size_t k = 1; k < field.energies.size(); ++k) EXPECT_LE(field.energies[k], field.energies[k - 1]) << "iteration " << k;
+  std::cout << "  ball: " << mesh.points.size() << " vertices, " << field.energies.size() - 1 << " iterations, energy "
+            << field.energies.front() << " -> " << field.energies.back() << ", largest boundary angle to the normal " << worst
+            << " degrees\n";
 }
 
 } // namespace

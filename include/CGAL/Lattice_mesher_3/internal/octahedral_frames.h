@@ -125,18 +125,41 @@ inline Sh9_matrix wigner(const Eigen::Matrix3d& r)
 // The frame whose axes are the columns of the rotation r.
 inline Sh9 frame_coefficients(const Eigen::Matrix3d& r) { return wigner(r) * axis_aligned_frame(); }
 
-// The rotation nearest to q on the octahedral variety (the Euclidean projection of q / |q|):
-// Newton's method on SO(3), perturbing R on the left, from five seeds (the identity, pi / 4 about
-// x, y and z, and pi / 4 about (1, 1, 0)), the best of the five (Ray et al.'s seeds; Newton with
-// the best seed lands in the global optimum more often than gradient ascent from the closest).
-// Returns the rotation, one of the 24 that represent the frame.
-inline Eigen::Matrix3d nearest_frame_rotation(const Sh9& q)
+// Newton's method on SO(3) for max_R q/|q| . D(R) q0, perturbing R on the left, from r: a Newton
+// step where the Hessian is negative definite, else a gradient step (Ray et al.'s 1/8), steps
+// capped at 0.5 radian.
+inline Eigen::Matrix3d refine_frame_rotation(const Sh9& q, Eigen::Matrix3d r)
 {
   const double norm = q.norm();
-  if(!(norm > 0.)) return Eigen::Matrix3d::Identity();
+  if(!(norm > 0.)) return r;
   const Sh9 target = q / norm;
   const std::array<Sh9_matrix, 3>& l = rotation_generators();
   const Sh9 q0 = axis_aligned_frame();
+  for(int it = 0; it < 100; ++it) {
+    const Sh9 a = wigner(r) * q0;
+    Eigen::Vector3d g;
+    Eigen::Matrix3d h;
+    std::array<Sh9, 3> la;
+    for(int k = 0; k < 3; ++k) { la[k] = l[k] * a; g[k] = target.dot(la[k]); }
+    if(g.norm() < 1e-12) break;
+    for(int k = 0; k < 3; ++k)
+      for(int m = 0; m < 3; ++m) h(k, m) = .5 * (target.dot(l[k] * la[m]) + target.dot(l[m] * la[k]));
+    Eigen::Vector3d w = g / 8.;
+    const Eigen::LLT<Eigen::Matrix3d> llt(-h);
+    if(llt.info() == Eigen::Success) w = llt.solve(g);
+    if(w.norm() > .5) w *= .5 / w.norm();
+    r = Eigen::AngleAxisd(w.norm(), w.norm() > 0. ? Eigen::Vector3d(w / w.norm()) : Eigen::Vector3d::UnitX()).toRotationMatrix() * r;
+  }
+  return r;
+}
+
+// The rotation nearest to q on the octahedral variety (the Euclidean projection of q / |q|):
+// refine_frame_rotation() from five seeds (the identity, pi / 4 about x, y and z, and pi / 4
+// about (1, 1, 0)), the best of the five (Ray et al.'s seeds; Newton from the best seed lands in
+// the global optimum more often than gradient ascent from the closest one). Returns one of the
+// 24 rotations that represent the frame.
+inline Eigen::Matrix3d nearest_frame_rotation(const Sh9& q)
+{
   const double quarter = 0.78539816339744830962;
   const std::array<Eigen::Matrix3d, 5> seeds = {{
     Eigen::Matrix3d::Identity(),
@@ -145,27 +168,10 @@ inline Eigen::Matrix3d nearest_frame_rotation(const Sh9& q)
     Eigen::AngleAxisd(quarter, Eigen::Vector3d::UnitZ()).toRotationMatrix(),
     Eigen::AngleAxisd(quarter, Eigen::Vector3d(1., 1., 0.).normalized()).toRotationMatrix() }};
   Eigen::Matrix3d best = Eigen::Matrix3d::Identity();
-  double best_dot = -2.;
+  double best_dot = -HUGE_VAL;
   for(const Eigen::Matrix3d& seed : seeds) {
-    Eigen::Matrix3d r = seed;
-    for(int it = 0; it < 100; ++it) {
-      const Sh9 a = wigner(r) * q0;
-      Eigen::Vector3d g;
-      Eigen::Matrix3d h;
-      std::array<Sh9, 3> la;
-      for(int k = 0; k < 3; ++k) { la[k] = l[k] * a; g[k] = target.dot(la[k]); }
-      for(int k = 0; k < 3; ++k)
-        for(int m = 0; m < 3; ++m) h(k, m) = .5 * (target.dot(l[k] * la[m]) + target.dot(l[m] * la[k]));
-      if(g.norm() < 1e-12) break;
-      // a Newton step toward the maximum where the Hessian is negative definite, else a
-      // gradient step (Ray et al.'s 1/8)
-      Eigen::Vector3d w = g / 8.;
-      Eigen::LLT<Eigen::Matrix3d> llt(-h);
-      if(llt.info() == Eigen::Success) w = llt.solve(g);
-      if(w.norm() > .5) w *= .5 / w.norm();
-      r = Eigen::AngleAxisd(w.norm(), w.norm() > 0. ? Eigen::Vector3d(w / w.norm()) : Eigen::Vector3d::UnitX()).toRotationMatrix() * r;
-    }
-    const double dot = target.dot(wigner(r) * q0);
+    const Eigen::Matrix3d r = refine_frame_rotation(q, seed);
+    const double dot = q.dot(frame_coefficients(r));
     if(dot > best_dot) { best_dot = dot; best = r; }
   }
   return best;

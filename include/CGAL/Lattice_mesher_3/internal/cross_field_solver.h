@@ -1,0 +1,280 @@
+// Copyright (c) 2026 Lattice_mesher_3 developers.
+// All rights reserved.
+//
+// This file is part of Lattice_mesher_3 (a CGAL-style package).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Lattice_mesher_3 developers
+
+#ifndef CGAL_LATTICE_MESHER_3_INTERNAL_CROSS_FIELD_SOLVER_H
+#define CGAL_LATTICE_MESHER_3_INTERNAL_CROSS_FIELD_SOLVER_H
+
+// A smooth octahedral frame field on the vertices of a tetrahedral mesh whose frames have an axis
+// along the boundary normal: Ray et al.'s representation and linear initialization (2016) with
+// the boundary constraint imposed exactly (2 free coefficients per boundary vertex, as Palmer et
+// al. 2020), then Palmer et al.'s modified MBO iterations (solve (M + tau_k L) q = M p under the
+// constraints, project onto the frames; tau_k = tau_0 / k^3, tau_0 = 50 / lambda_1), on the
+// graph Laplacian of the mesh's edges, each weighted by the number of tetrahedra around it.
+
+#include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
+#include <CGAL/Lattice_mesher_3/frame_fields.h>
+#include <CGAL/Lattice_mesher_3/internal/octahedral_frames.h>
+
+#include <Eigen/Sparse>
+#include <Eigen/IterativeLinearSolvers>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Lattice_mesher_3 {
+namespace internal {
+
+// What constrains a vertex's frame: nothing (inside), an axis along a direction (a boundary
+// normal, or a feature curve's tangent), or the whole frame (a crease or corner whose normals are
+// about orthogonal).
+struct Frame_constraint
+{
+  enum Kind { FREE, AXIS, FULL } kind = FREE;
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+  Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();
+};
+
+// The constraints of the boundary vertices of a mesh of `domain`: the area-weighted normals of
+// their boundary faces, patch by patch (`boundary_patches`, one patch without them). One patch:
+// the domain's normal there (the faces' if it points inward). Two: the
+// frame [n1, n2, n1 x n2] made orthogonal (polar factor) if the normals are 75 to 105 degrees
+// apart, else the crease's direction n1 x n2. Three about orthogonal normals: their frame; any
+// other corner is free.
+template <typename Point_3, typename Domain>
+std::vector<Frame_constraint> boundary_frame_constraints(const Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain)
+{
+  std::vector<std::map<int, Eigen::Vector3d> > normals(mesh.points.size());
+  for(std::size_t k = 0; k < mesh.boundary_faces.size(); ++k) {
+    const std::array<int, 3>& f = mesh.boundary_faces[k];
+    const Eigen::Vector3d a = to_eigen(mesh.points[f[0]]), b = to_eigen(mesh.points[f[1]]), c = to_eigen(mesh.points[f[2]]);
+    const Eigen::Vector3d n = (b - a).cross(c - a);   // twice the area, outward
+    const int patch = label(mesh.boundary_patches, std::ptrdiff_t(k));
+    for(int v : f) {
+      auto it = normals[std::size_t(v)].emplace(patch, Eigen::Vector3d::Zero()).first;
+      it->second += n;
+    }
+  }
+  const double orthogonal = 0.26;   // |cos| of 75 degrees
+  auto polar = [](const Eigen::Matrix3d& m) {
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(m, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Eigen::Matrix3d r = svd.matrixU() * svd.matrixV().transpose();
+    if(r.determinant() < 0.) {
+      Eigen::Matrix3d u = svd.matrixU();
+      u.col(2) *= -1.;
+      r = u * svd.matrixV().transpose();
+    }
+    return r;
+  };
+  std::vector<Frame_constraint> constraints(mesh.points.size());
+  for(std::size_t v = 0; v < mesh.points.size(); ++v) {
+    std::vector<Eigen::Vector3d> n;
+    for(const auto& p : normals[v]) if(p.second.norm() > 0.) n.push_back(p.second.normalized());
+    Frame_constraint& c = constraints[v];
+    if(n.size() == 1) {   // the surface's own normal, which the faces' only approximate
+      const Eigen::Vector3d normal = to_eigen(domain.project_on_surface(mesh.points[v]).direction);
+      c.kind = Frame_constraint::AXIS;
+      c.axis = normal.norm() > 0. && normal.dot(n[0]) > 0. ? Eigen::Vector3d(normal.normalized()) : n[0];
+    }
+    else if(n.size() == 2) {
+      const Eigen::Vector3d t = n[0].cross(n[1]);
+      if(std::abs(n[0].dot(n[1])) < orthogonal) {
+        Eigen::Matrix3d m;
+        m << n[0], n[1], t.normalized();
+        c.kind = Frame_constraint::FULL;
+        c.frame = polar(m);
+      }
+      else if(t.norm() > 1e-12) { c.kind = Frame_constraint::AXIS; c.axis = t.normalized(); }
+    }
+    else if(n.size() == 3 && std::abs(n[0].dot(n[1])) < orthogonal && std::abs(n[0].dot(n[2])) < orthogonal &&
+            std::abs(n[1].dot(n[2])) < orthogonal) {
+      Eigen::Matrix3d m;
+      m << n[0], n[1], n[2];
+      c.kind = Frame_constraint::FULL;
+      c.frame = polar(m);
+    }
+  }
+  return constraints;
+}
+
+// The frame field of a mesh: per vertex a rotation whose columns are the frame's axes, and the
+// smoothness energy 1/2 sum_ij w_ij |q_i - q_j|^2 of the projected field after each iteration
+// (the first: after the initialization).
+struct Cross_field_result
+{
+  std::vector<Eigen::Matrix3d> rotations;
+  std::vector<double> energies;
+};
+
+class Cross_field_solver
+{
+public:
+  template <typename Point_3>
+  Cross_field_solver(const Tetrahedral_mesh_3<Point_3>& mesh, std::vector<Frame_constraint> constraints)
+    : n_(mesh.points.size()), constraints_(std::move(constraints))
+  {
+    std::map<std::pair<int, int>, double> weights;   // per edge, the number of its tetrahedra
+    for(const std::array<int, 4>& t : mesh.tets)
+      for(int i = 0; i < 4; ++i)
+        for(int j = i + 1; j < 4; ++j) weights[std::minmax(t[i], t[j])] += 1.;
+    edges_.assign(weights.begin(), weights.end());
+    lambda1_ = first_eigenvalue(mesh, edges_);
+    // the unknowns: q_v = B_v x_v + f_v, 9, 2 (an axis along a) or 0 (a fixed frame) per vertex
+    basis_.resize(n_);
+    offset_.resize(n_ + 1, 0);
+    fixed_.assign(n_, Sh9::Zero());
+    for(std::size_t v = 0; v < n_; ++v) {
+      const Frame_constraint& c = constraints_[v];
+      if(c.kind == Frame_constraint::FREE) basis_[v] = Eigen::MatrixXd::Identity(9, 9);
+      else if(c.kind == Frame_constraint::AXIS) {
+        const Sh9_matrix d = wigner(Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), c.axis).toRotationMatrix());
+        basis_[v].resize(9, 2);
+        basis_[v] << d.col(0), d.col(8);
+        fixed_[v] = d.col(4) * std::sqrt(7. / 12.);
+      }
+      else { basis_[v].resize(9, 0); fixed_[v] = frame_coefficients(c.frame); }
+      offset_[v + 1] = offset_[v] + int(basis_[v].cols());
+    }
+  }
+
+  // The initialization and `iterations` MBO steps (fewer if the energy changes by less than
+  // 1e-5 of itself). Returns the iterate of least energy.
+  Cross_field_result solve(int iterations)
+  {
+    Cross_field_result result;
+    Eigen::VectorXd x = minimize(0., std::vector<Sh9>(n_, Sh9::Zero()));
+    result.rotations.resize(n_);
+    for(std::size_t v = 0; v < n_; ++v) result.rotations[v] = project(v, coefficients(v, x), nullptr);
+    result.energies.push_back(energy(result.rotations));
+    std::vector<Eigen::Matrix3d> best = result.rotations;
+    double best_energy = result.energies.back();
+    const double tau0 = 50. / lambda1_;
+    for(int k = 1; k <= iterations; ++k) {
+      std::vector<Sh9> p(n_);
+      for(std::size_t v = 0; v < n_; ++v) p[v] = frame_coefficients(result.rotations[v]);
+      x = minimize(tau0 / (double(k) * k * k), p);
+      for(std::size_t v = 0; v < n_; ++v) result.rotations[v] = project(v, coefficients(v, x), &result.rotations[v]);
+      result.energies.push_back(energy(result.rotations));
+      if(result.energies.back() < best_energy) { best_energy = result.energies.back(); best = result.rotations; }
+      // the steps with tau lambda_1 above 1 / 100 diffuse over the whole mesh, as the harmonic
+      // field: they may change nothing
+      const double previous = result.energies[result.energies.size() - 2], now = result.energies.back();
+      if(double(k) * k * k > 5000. && std::abs(previous - now) < 1e-5 * std::abs(previous)) break;
+    }
+    result.rotations = best;
+    return result;
+  }
+
+private:
+  typedef Eigen::SparseMatrix<double> Sparse;
+
+  Sh9 coefficients(std::size_t v, const Eigen::VectorXd& x) const
+  {
+    return basis_[v] * x.segment(offset_[v], basis_[v].cols()) + fixed_[v];
+  }
+
+  // The nearest frame that meets v's constraint, from the rotation `start` if given.
+  Eigen::Matrix3d project(std::size_t v, const Sh9& q, const Eigen::Matrix3d* start) const
+  {
+    const Frame_constraint& c = constraints_[v];
+    if(c.kind == Frame_constraint::FULL) return c.frame;
+    if(c.kind == Frame_constraint::AXIS) return nearest_aligned_frame_rotation(q, c.axis);
+    // the seeds, and the previous frame if given: the best of these
+    const Eigen::Matrix3d cold = nearest_frame_rotation(q);
+    if(start == nullptr) return cold;
+    const Eigen::Matrix3d warm = refine_frame_rotation(q, *start);
+    return q.dot(frame_coefficients(cold)) >= q.dot(frame_coefficients(warm)) ? cold : warm;
+  }
+
+  double energy(const std::vector<Eigen::Matrix3d>& rotations) const
+  {
+    std::vector<Sh9> q(n_);
+    for(std::size_t v = 0; v < n_; ++v) q[v] = frame_coefficients(rotations[v]);
+    double e = 0.;
+    for(const auto& edge : edges_) e += .5 * edge.second * (q[std::size_t(edge.first.first)] - q[std::size_t(edge.first.second)]).squaredNorm();
+    return e;
+  }
+
+  // argmin_x 1/2 sum_v |q_v - p_v|^2 + tau/2 sum_ij w_ij |q_i - q_j|^2 (tau = 0: the harmonic
+  // field, 1/2 sum_ij w_ij |q_i - q_j|^2 alone) with q_v = B_v x_v + f_v.
+  Eigen::VectorXd minimize(double tau, const std::vector<Sh9>& p) const
+  {
+    const int size = offset_[n_];
+    if(size == 0) return Eigen::VectorXd();
+    const double mass = tau > 0. ? 1. : 0., stiffness = tau > 0. ? tau : 1.;
+    std::vector<Eigen::Triplet<double> > triplets;
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(size);
+    auto add_block = [&](std::size_t i, std::size_t j, const Eigen::MatrixXd& m) {
+      for(int r = 0; r < m.rows(); ++r)
+        for(int c = 0; c < m.cols(); ++c) triplets.emplace_back(offset_[i] + r, offset_[j] + c, m(r, c));
+    };
+    for(std::size_t v = 0; v < n_; ++v) {
+      if(mass == 0. || basis_[v].cols() == 0) continue;
+      add_block(v, v, mass * basis_[v].transpose() * basis_[v]);
+      b.segment(offset_[v], basis_[v].cols()) += mass * basis_[v].transpose() * (p[v] - fixed_[v]);
+    }
+    for(const auto& edge : edges_) {
+      const std::size_t i = std::size_t(edge.first.first), j = std::size_t(edge.first.second);
+      const double w = stiffness * edge.second;
+      const Eigen::MatrixXd& bi = basis_[i];
+      const Eigen::MatrixXd& bj = basis_[j];
+      const Sh9 df = fixed_[i] - fixed_[j];
+      if(bi.cols() > 0) { add_block(i, i, w * bi.transpose() * bi); b.segment(offset_[i], bi.cols()) -= w * bi.transpose() * df; }
+      if(bj.cols() > 0) { add_block(j, j, w * bj.transpose() * bj); b.segment(offset_[j], bj.cols()) += w * bj.transpose() * df; }
+      if(bi.cols() > 0 && bj.cols() > 0) {
+        const Eigen::MatrixXd m = -w * bi.transpose() * bj;
+        add_block(i, j, m);
+        add_block(j, i, m.transpose());
+      }
+    }
+    Sparse a(size, size);
+    a.setFromTriplets(triplets.begin(), triplets.end());
+    Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double> > cg;
+    cg.setTolerance(1e-10);
+    cg.setMaxIterations(2000);
+    cg.compute(a);
+    return cg.solve(b);
+  }
+
+  // About lambda_1, the smallest nonzero eigenvalue of the graph Laplacian (unit masses): the
+  // Rayleigh quotient of the coordinate along which the mesh is longest, an upper bound within
+  // a small factor (for a box, the first eigenvector is that coordinate's cosine).
+  template <typename Point_3>
+  static double first_eigenvalue(const Tetrahedral_mesh_3<Point_3>& mesh,
+                                 const std::vector<std::pair<std::pair<int, int>, double> >& edges)
+  {
+    Eigen::MatrixXd x(mesh.points.size(), 3);
+    for(std::size_t v = 0; v < mesh.points.size(); ++v) x.row(Eigen::Index(v)) = to_eigen(mesh.points[v]).transpose();
+    int axis = 0;
+    (x.colwise().maxCoeff() - x.colwise().minCoeff()).maxCoeff(&axis);
+    Eigen::VectorXd f = x.col(axis);
+    f.array() -= f.mean();
+    double numerator = 0.;
+    for(const auto& edge : edges) numerator += edge.second * (f[edge.first.first] - f[edge.first.second]) * (f[edge.first.first] - f[edge.first.second]);
+    return numerator / (std::max)(f.squaredNorm(), 1e-300);
+  }
+
+  std::size_t n_;
+  double lambda1_ = 1.;
+  std::vector<Frame_constraint> constraints_;
+  std::vector<std::pair<std::pair<int, int>, double> > edges_;
+  std::vector<Eigen::MatrixXd> basis_;
+  std::vector<int> offset_;
+  std::vector<Sh9> fixed_;
+};
+
+} // namespace internal
+} // namespace Lattice_mesher_3
+} // namespace CGAL
+
+#endif // CGAL_LATTICE_MESHER_3_INTERNAL_CROSS_FIELD_SOLVER_H
