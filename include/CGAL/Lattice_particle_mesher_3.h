@@ -245,7 +245,7 @@ public:
         if(sc.grow) initialize_particles(o.edge_length);
         else scatter_particles(o.edge_length);
       }
-      else Lattice_mesher_3::internal::refine_particles(particles_, domain_, field_, lattice_, o);
+      else Lattice_mesher_3::internal::insert_particles(particles_, domain_, field_, lattice_, o);   // refinement
       auto report = [&](int round, const Optimization_result& r, std::size_t del, std::size_t ins, bool final_round) {
         Round_report rep;
         rep.level = level; rep.round = round; rep.final_round = final_round;
@@ -382,17 +382,15 @@ public:
     };
     Mesh mesh = Lattice_mesher_3::internal::tetrahedralize_particles(particles_, domain_, field_, o, traits_);
     stage("tetrahedralization");
-    // the shape-matching flips need a lattice to match: not for the hole-less kernel
     Lattice_mesher_3::internal::Flip_options fo;
-    if(lattice_.has_holes()) { fo.lattice = lattice_; fo.edge_length = p_.edge_length; }
+    Lattice_mesher_3::internal::set_lattice_to_keep(fo, lattice_, p_.edge_length);
     if(p_.flip) Lattice_mesher_3::internal::flip_tetrahedra(mesh, field_, fo);
     stage("flips");
     // smoothing moves vertices by a fraction of an edge: the connectivity already follows the
     // field, only the worst tetrahedra are flipped again
     Lattice_mesher_3::internal::Smoothing_options so;
     so.threads = p_.threads;
-    // lattice tetrahedra stay as they are (the hole-less kernel has no lattice to keep)
-    if(lattice_.has_holes()) { so.lattice = lattice_; so.edge_length = p_.edge_length; }
+    Lattice_mesher_3::internal::set_lattice_to_keep(so, lattice_, p_.edge_length);
     // The extra vertices of lattice defects are removed once the first round has done what
     // moves could (before it, contractions take vertices the smoothing would have placed well).
     auto smooth_and_flip = [&](const Lattice_mesher_3::internal::Smoothing_options& options) {

@@ -63,16 +63,15 @@ template <typename NamedParameters>
 Flip_options flip_options(const NamedParameters& np)
 {
   Flip_options o;
-  read_parameter(np, internal_np::edge_length, o.edge_length);
-  if(o.edge_length > 0.) o.lattice = stage_lattice(np);
+  read_lattice_to_keep(o, np, "flip_tetrahedra");
   read_parameter(np, internal_np::shape_tolerance, o.shape_tolerance);
   read_parameter(np, internal_np::floor_angle, o.floor_angle);
   read_parameter(np, internal_np::target_angle, o.target_angle);
   read_parameter(np, internal_np::boundary_flatness, o.boundary_flatness);
   read_parameter(np, internal_np::number_of_passes, o.max_passes);
   read_parameter(np, internal_np::maximum_ring_size, o.max_ring_size);
-  if(!(o.edge_length >= 0.) || !std::isfinite(o.edge_length) || !(o.shape_tolerance >= 0.) || !(o.boundary_flatness >= 0.))
-    throw std::invalid_argument("flip_tetrahedra(): edge_length(), shape_tolerance() and boundary_flatness() must be at least 0 and finite");
+  if(!(o.shape_tolerance >= 0.) || !(o.boundary_flatness >= 0.))
+    throw std::invalid_argument("flip_tetrahedra(): shape_tolerance() and boundary_flatness() must be at least 0");
   if(o.max_passes < 0 || o.max_ring_size < 3)
     throw std::invalid_argument("flip_tetrahedra(): number_of_passes() must be at least 0 and maximum_ring_size() at least 3");
   return o;
@@ -526,7 +525,7 @@ within 1 degree of one plane; `target_angle(0)` does only that.
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{edge_length}
-    \cgalParamDescription{l*: with it, flips first make the mapped tetrahedra approach those of `lattice` at this cube edge}
+    \cgalParamDescription{l*: with it, flips first make the mapped tetrahedra approach those of `lattice` at this cube edge (not for `Lattice_type::GAUSSIAN`, which forms no lattice)}
     \cgalParamType{double}
     \cgalParamDefault{0: no lattice, only the smallest angle is raised}
   \cgalParamNEnd

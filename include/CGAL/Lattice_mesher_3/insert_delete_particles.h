@@ -231,14 +231,6 @@ std::size_t insert_particles(Particle_set_3<Point_3>& ps, const Domain& domain, 
                                      0.75 * lattice.closest_distance * o.edge_length, o);
 }
 
-// see refine_particles()
-template <typename Domain, typename FrameField, typename Point_3>
-std::size_t refine_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
-                             const Lattice_3& lattice, const Optimization_options& o)
-{
-  return internal::insert_particles(ps, domain, field, lattice, o);
-}
-
 // see insert_feature_particles()
 template <typename Domain, typename FrameField, typename Point_3>
 std::size_t insert_feature_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
@@ -317,28 +309,8 @@ Distances beyond the search radius count as that radius. Returns the number dele
 \tparam Domain a model of `LatticeMeshDomain_3`
 \tparam FrameField a model of `FrameField_3`
 
-\cgalNamedParamsBegin
-  \cgalParamNBegin{edge_length}
-    \cgalParamDescription{l*, the lattice cube edge in the isotropic space of the field}
-    \cgalParamType{double}
-    \cgalParamExtra{required}
-  \cgalParamNEnd
-  \cgalParamNBegin{lattice}
-    \cgalParamDescription{the lattice: its one-ring and closest distance l_closest}
-    \cgalParamType{`Lattice_type`}
-    \cgalParamDefault{`Lattice_type::BCC`}
-  \cgalParamNEnd
-  \cgalParamNBegin{neighbor_radius_ratio}
-    \cgalParamDescription{R / l*: the isotropic radius of the neighbour search}
-    \cgalParamType{double}
-    \cgalParamDefault{1.3}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{OpenMP threads}
-    \cgalParamType{int}
-    \cgalParamDefault{1}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+The named parameters are those of `optimize_particles()`, with its defaults; deletion reads
+`edge_length` (required), `lattice`, `neighbor_radius_ratio` and `number_of_threads`.
 
 \throws std::invalid_argument naming the named parameter that is missing or out of range
 */
@@ -364,38 +336,9 @@ Returns the number inserted.
 \tparam Domain a model of `LatticeMeshDomain_3`
 \tparam FrameField a model of `FrameField_3`
 
-\cgalNamedParamsBegin
-  \cgalParamNBegin{edge_length}
-    \cgalParamDescription{l*, the lattice cube edge in the isotropic space of the field}
-    \cgalParamType{double}
-    \cgalParamExtra{required}
-  \cgalParamNEnd
-  \cgalParamNBegin{lattice}
-    \cgalParamDescription{the lattice: its one-ring and closest distance l_closest}
-    \cgalParamType{`Lattice_type`}
-    \cgalParamDefault{`Lattice_type::BCC`}
-  \cgalParamNEnd
-  \cgalParamNBegin{sigma_ratio}
-    \cgalParamDescription{sigma / l_closest of the kernel, whose energy ranks the candidates}
-    \cgalParamType{double}
-    \cgalParamDefault{0.3}
-  \cgalParamNEnd
-  \cgalParamNBegin{neighbor_radius_ratio}
-    \cgalParamDescription{R / l*: the isotropic radius of the neighbour search}
-    \cgalParamType{double}
-    \cgalParamDefault{1.3}
-  \cgalParamNEnd
-  \cgalParamNBegin{boundary_distance_ratio}
-    \cgalParamDescription{a candidate this close (times l*) to a sharp edge is projected on it}
-    \cgalParamType{double}
-    \cgalParamDefault{0.3}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{OpenMP threads}
-    \cgalParamType{int}
-    \cgalParamDefault{1}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+The named parameters are those of `optimize_particles()`, with its defaults; insertion reads
+`edge_length` (required), `lattice`, `sigma_ratio` (the candidates are ranked by the kernel's
+energy), `neighbor_radius_ratio`, `boundary_distance_ratio` and `number_of_threads`.
 
 \throws std::invalid_argument naming the named parameter that is missing or out of range
 */
@@ -420,38 +363,7 @@ BCC, 18,000 vertices: 5,358 then, 731 now). Returns the number added.
 \tparam Domain a model of `LatticeMeshDomain_3`
 \tparam FrameField a model of `FrameField_3`
 
-\cgalNamedParamsBegin
-  \cgalParamNBegin{edge_length}
-    \cgalParamDescription{l*, the lattice cube edge in the isotropic space of the field}
-    \cgalParamType{double}
-    \cgalParamExtra{required}
-  \cgalParamNEnd
-  \cgalParamNBegin{lattice}
-    \cgalParamDescription{the lattice: its one-ring and closest distance l_closest}
-    \cgalParamType{`Lattice_type`}
-    \cgalParamDefault{`Lattice_type::BCC`}
-  \cgalParamNEnd
-  \cgalParamNBegin{sigma_ratio}
-    \cgalParamDescription{sigma / l_closest of the kernel, whose energy ranks the candidates}
-    \cgalParamType{double}
-    \cgalParamDefault{0.3}
-  \cgalParamNEnd
-  \cgalParamNBegin{neighbor_radius_ratio}
-    \cgalParamDescription{R / l*: the isotropic radius of the neighbour search}
-    \cgalParamType{double}
-    \cgalParamDefault{1.3}
-  \cgalParamNEnd
-  \cgalParamNBegin{boundary_distance_ratio}
-    \cgalParamDescription{a candidate this close (times l*) to a sharp edge is projected on it}
-    \cgalParamType{double}
-    \cgalParamDefault{0.3}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{OpenMP threads}
-    \cgalParamType{int}
-    \cgalParamDefault{1}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+The named parameters are those of `insert_particles()`.
 
 \throws std::invalid_argument naming the named parameter that is missing or out of range
 */
@@ -460,7 +372,7 @@ template <typename Domain, typename FrameField, typename Point_3,
 std::size_t refine_particles(Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
                              const NamedParameters& np = parameters::default_values())
 {
-  return internal::refine_particles(ps, domain, field, internal::stage_lattice(np), internal::optimization_options(np, "refine_particles"));
+  return internal::insert_particles(ps, domain, field, internal::stage_lattice(np), internal::optimization_options(np, "refine_particles"));
 }
 
 /*!
@@ -477,23 +389,8 @@ next deletion then removes the crowded face particles. Returns the number insert
 \tparam Domain a model of `LatticeMeshDomain_3`
 \tparam FrameField a model of `FrameField_3`
 
-\cgalNamedParamsBegin
-  \cgalParamNBegin{edge_length}
-    \cgalParamDescription{l*, the lattice cube edge in the isotropic space of the field}
-    \cgalParamType{double}
-    \cgalParamExtra{required}
-  \cgalParamNEnd
-  \cgalParamNBegin{lattice}
-    \cgalParamDescription{the lattice: its one-ring and closest distance l_closest}
-    \cgalParamType{`Lattice_type`}
-    \cgalParamDefault{`Lattice_type::BCC`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{OpenMP threads}
-    \cgalParamType{int}
-    \cgalParamDefault{1}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+The named parameters are those of `optimize_particles()`, with its defaults; this stage reads
+`edge_length` (required), `lattice` and `number_of_threads`.
 
 \throws std::invalid_argument naming the named parameter that is missing or out of range
 */
@@ -519,23 +416,13 @@ Returns the number inserted.
 \tparam FrameField a model of `FrameField_3`
 
 \cgalNamedParamsBegin
-  \cgalParamNBegin{edge_length}
-    \cgalParamDescription{l*, the lattice cube edge in the isotropic space of the field}
-    \cgalParamType{double}
-    \cgalParamExtra{required}
-  \cgalParamNEnd
-  \cgalParamNBegin{lattice}
-    \cgalParamDescription{the lattice: its one-ring and closest distance l_closest}
-    \cgalParamType{`Lattice_type`}
-    \cgalParamDefault{`Lattice_type::BCC`}
-  \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations}
     \cgalParamDescription{L-BFGS iterations after each insertion}
     \cgalParamType{int}
     \cgalParamDefault{5}
   \cgalParamNEnd
 \cgalNamedParamsEnd
-The other named parameters of `optimize_particles()` apply to its rounds.
+The other named parameters are those of `optimize_particles()`, for the insertions and the rounds.
 
 \throws std::invalid_argument naming the named parameter that is missing or out of range
 */

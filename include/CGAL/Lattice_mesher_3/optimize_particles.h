@@ -66,7 +66,7 @@ struct Optimization_options
 
 
 // The settings of optimize_particles(), delete_particles(), insert_particles(),
-// refine_particles() and grow_particles() from their named parameters.
+// insert_feature_particles() and grow_particles() from their named parameters.
 template <typename NamedParameters>
 Optimization_options optimization_options(const NamedParameters& np, const char* stage)
 {

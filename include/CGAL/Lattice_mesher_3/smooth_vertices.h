@@ -69,8 +69,7 @@ template <typename NamedParameters>
 Smoothing_options smoothing_options(const NamedParameters& np)
 {
   Smoothing_options o;
-  read_parameter(np, internal_np::edge_length, o.edge_length);
-  if(o.edge_length > 0.) o.lattice = stage_lattice(np);
+  read_lattice_to_keep(o, np, "smooth_vertices");
   read_parameter(np, internal_np::selection_angle, o.select_angle);
   read_parameter(np, internal_np::target_angle, o.target_angle);
   read_parameter(np, internal_np::worst_angle, o.worst_angle);
@@ -81,9 +80,9 @@ Smoothing_options smoothing_options(const NamedParameters& np)
   read_parameter(np, internal_np::lattice_tolerance, o.lattice_tolerance);
   read_parameter(np, internal_np::number_of_passes, o.max_passes);
   read_parameter(np, internal_np::number_of_threads, o.threads);
-  for(double x : { o.edge_length, o.worst_weight, o.radius_ratio_weight, o.lattice_tolerance })
+  for(double x : { o.worst_weight, o.radius_ratio_weight, o.lattice_tolerance })
     if(!(x >= 0.) || !std::isfinite(x))
-      throw std::invalid_argument("smooth_vertices(): edge_length(), worst_weight(), radius_ratio_weight() and lattice_tolerance() must be at least 0 and finite");
+      throw std::invalid_argument("smooth_vertices(): worst_weight(), radius_ratio_weight() and lattice_tolerance() must be at least 0 and finite");
   if(o.max_passes < 0 || o.threads < 1)
     throw std::invalid_argument("smooth_vertices(): number_of_passes() must be at least 0 and number_of_threads() at least 1");
   return o;
@@ -387,7 +386,7 @@ fall below the floor, so the boundary stays on the surface and the mesh stays va
     \cgalParamDefault{40}
   \cgalParamNEnd
   \cgalParamNBegin{edge_length}
-    \cgalParamDescription{l*: with it, a tetrahedron whose six edges (isotropic space) all lie within `lattice_tolerance` x l* of a vector of `lattice` (a one-ring offset or the sum of two) and whose smallest angle is at least `floor_angle` is a lattice tetrahedron, and is not selected}
+    \cgalParamDescription{l*: with it, a tetrahedron whose six edges (isotropic space) all lie within `lattice_tolerance` x l* of a vector of `lattice` (a one-ring offset or the sum of two) and whose smallest angle is at least `floor_angle` is a lattice tetrahedron, and is not selected (not for `Lattice_type::GAUSSIAN`, which forms no lattice)}
     \cgalParamType{double}
     \cgalParamDefault{0: every tetrahedron below `selection_angle` is selected}
   \cgalParamNEnd

@@ -189,11 +189,14 @@ private:
     const Frame_constraint& c = constraints_[v];
     if(c.kind == Frame_constraint::FULL) return c.frame;
     if(c.kind == Frame_constraint::AXIS) return nearest_aligned_frame_rotation(q, c.axis);
-    // the seeds, and the previous frame if given: the best of these
-    const Eigen::Matrix3d cold = nearest_frame_rotation(q);
-    if(start == nullptr) return cold;
+    if(start == nullptr) return nearest_frame_rotation(q);
+    // from the previous frame; the five seeds only where q has moved far from it (a cosine
+    // below 0.99 to the nearest frame found), near the singularities
     const Eigen::Matrix3d warm = refine_frame_rotation(q, *start);
-    return q.dot(frame_coefficients(cold)) >= q.dot(frame_coefficients(warm)) ? cold : warm;
+    const double fit = q.dot(frame_coefficients(warm));
+    if(fit >= .99 * q.norm()) return warm;
+    const Eigen::Matrix3d cold = nearest_frame_rotation(q);
+    return q.dot(frame_coefficients(cold)) > fit ? cold : warm;
   }
 
   double energy(const std::vector<Eigen::Matrix3d>& rotations) const

@@ -15,6 +15,7 @@
 #include <CGAL/centroid.h>
 #include <CGAL/Kernel_traits.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <map>
@@ -107,27 +108,26 @@ void label_mesh(Tetrahedral_mesh_3<Point_3>& mesh, const Indices& indices)
   };
   std::map<typename Indices::Subdomain_index, int> subdomain_numbers;
   std::map<typename Indices::Surface_patch_index, int> patch_numbers;
-  std::map<std::array<int, 3>, int> apex;   // of each face's tetrahedron, by sorted face
+  auto sorted = [](std::array<int, 3> f) { std::sort(f.begin(), f.end()); return f; };
+  std::map<std::array<int, 3>, std::size_t> boundary;   // sorted boundary face -> its index
+  for(std::size_t k = 0; k < mesh.boundary_faces.size(); ++k) boundary.emplace(sorted(mesh.boundary_faces[k]), k);
+  std::vector<int> apex(mesh.boundary_faces.size(), -1);   // of each boundary face's tetrahedron
   mesh.subdomains.assign(mesh.tets.size(), 1);
   for(std::size_t t = 0; t < mesh.tets.size(); ++t) {
     const std::array<int, 4>& c = mesh.tets[t];
     const Point_3 g = CGAL::centroid(mesh.points[c[0]], mesh.points[c[1]], mesh.points[c[2]], mesh.points[c[3]]);
     mesh.subdomains[t] = as_int(indices.subdomain(g), subdomain_numbers);
     for(int i = 0; i < 4; ++i) {
-      std::array<int, 3> f{ c[(i + 1) % 4], c[(i + 2) % 4], c[(i + 3) % 4] };
-      std::sort(f.begin(), f.end());
-      apex[f] = c[i];
+      const auto f = boundary.find(sorted({ c[(i + 1) % 4], c[(i + 2) % 4], c[(i + 3) % 4] }));
+      if(f != boundary.end()) apex[f->second] = c[i];
     }
   }
   mesh.boundary_patches.assign(mesh.boundary_faces.size(), 1);
   for(std::size_t k = 0; k < mesh.boundary_faces.size(); ++k) {
+    if(apex[k] < 0) continue;
     const std::array<int, 3>& f = mesh.boundary_faces[k];
-    std::array<int, 3> s = f;
-    std::sort(s.begin(), s.end());
-    const auto a = apex.find(s);
-    if(a == apex.end()) continue;
     const Point_3 g = CGAL::centroid(mesh.points[f[0]], mesh.points[f[1]], mesh.points[f[2]]);
-    const auto half = (mesh.points[a->second] - g) * .5;
+    const auto half = (mesh.points[std::size_t(apex[k])] - g) * .5;
     mesh.boundary_patches[k] = as_int(indices.patch(g + half, g - half), patch_numbers);
   }
 }

@@ -57,6 +57,25 @@ Lattice_3 stage_lattice(const NamedParameters& np)
   return lattice;
 }
 
+// The lattice whose tetrahedra the flips match and the smoothing keeps, and its cube edge l*:
+// none without l* (0), nor for the hole-less kernel, which forms no lattice. `o` has the
+// members `lattice` and `edge_length`.
+template <typename Options>
+void set_lattice_to_keep(Options& o, const Lattice_3& lattice, double edge_length)
+{
+  if(edge_length > 0. && lattice.has_holes()) { o.lattice = lattice; o.edge_length = edge_length; }
+}
+
+// The same from the named parameters `lattice` and `edge_length` of a mesh stage.
+template <typename Options, typename NamedParameters>
+void read_lattice_to_keep(Options& o, const NamedParameters& np, const char* stage)
+{
+  const double l = parameters::choose_parameter(parameters::get_parameter(np, internal_np::edge_length), 0.);
+  if(!(l >= 0.) || !std::isfinite(l))
+    throw std::invalid_argument(std::string(stage) + "(): the named parameter edge_length() must be at least 0 and finite");
+  set_lattice_to_keep(o, stage_lattice(np), l);
+}
+
 } // namespace internal
 } // namespace Lattice_mesher_3
 } // namespace CGAL
