@@ -234,9 +234,9 @@ public:
     };
     auto insert = [&](const Lattice_mesher_3::internal::Optimization_options& o) {
       if(!sc.grow) return std::size_t(0);
-      // the gaps along the curves first, then the one-ring candidates
-      const std::size_t on_curves = Lattice_mesher_3::internal::insert_feature_particles(particles_, domain_, field_, lattice_, o);
-      return on_curves + Lattice_mesher_3::internal::insert_particles(particles_, domain_, field_, lattice_, o);
+      // the one-ring candidates, then the gaps left along the curves
+      const std::size_t inserted = Lattice_mesher_3::internal::insert_particles(particles_, domain_, field_, lattice_, o);
+      return inserted + Lattice_mesher_3::internal::insert_feature_particles(particles_, domain_, field_, lattice_, o);
     };
 
     for(int level = levels; level >= 0; --level) {

@@ -347,8 +347,8 @@ TEST(Lattice_mesh_3, StagesCalledAloneDoWhatThePipelineDoes)
   LM::Particle_set_3<Point_3> ps = start.particles();
   LM::Optimization_result r = LM::optimize_particles(ps, cube(), field, np.number_of_iterations(13));
   auto insert = [&] {
-    const std::size_t on_curves = LM::insert_feature_particles(ps, cube(), field, np);
-    return on_curves + LM::insert_particles(ps, cube(), field, np);
+    const std::size_t inserted = LM::insert_particles(ps, cube(), field, np);
+    return inserted + LM::insert_feature_particles(ps, cube(), field, np);
   };
   for(int round = 1; round <= 16; ++round) {
     const std::size_t deleted = LM::delete_particles(ps, cube(), field, np);
