@@ -23,6 +23,7 @@
 #include <CGAL/Lattice_mesher_3/Implicit_lattice_domain_3.h>
 #include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
 #include <CGAL/Lattice_mesher_3/check_mesh.h>
+#include <CGAL/Lattice_mesher_3/compute_cross_field_3.h>
 #include <CGAL/Lattice_mesher_3/mesh_quality.h>
 #include <CGAL/Lattice_mesher_3/sizing_fields.h>
 
@@ -57,14 +58,16 @@ typedef LM::Implicit_lattice_domain_3<K, std::function<double(const Point_3&)> >
 static const char* usage =
   "usage: lattice-mesh [INPUT | --domain cube|cube11|sphere|torus] [--lattice bcc|fcc|gaussian]\n"
   "                    [--edge-length L | --vertices N]\n"
-  "                    [--field identity|rotation-y|fig8|fig9|FILE [--field-data FILE]]\n"
+  "                    [--field identity|rotation-y|fig8|fig9|cross|FILE [--field-data FILE]]\n"
+  "                    [--field-vertices N] [--singularities OUT.vtu]\n"
   "                    [--feature-angle DEG] [--seed S] [--threads N] [--coarse-levels K]\n"
   "                    [--max-rounds R] [--no-flips] [--smoothing-rounds N] [--time-limit S]\n"
   "                    [--quiet | --verbose]\n"
   "                    [--size-field FILE] [--cells-across C] [--surface-tolerance E]\n"
   "                    [--grading G] [--min-edge-length H]\n"
   "                    -o OUT.mesh|OUT.vtu|OUT.msh [-o ...] [--stats OUT.json] [--png OUT.png]\n"
-  "       lattice-mesh [INPUT | --domain ...] [--field ...] --write-field OUT.txt --field-spacing H\n"
+  "       lattice-mesh [INPUT | --domain ...] [--field ...] --write-field OUT.txt|OUT.mesh\n"
+  "                    [--field-spacing H]\n"
   "  INPUT            closed triangle surface (OFF, OBJ, STL, PLY)\n"
   "  --domain         built-in shape: cube [0.1,1.1]^3, cube11 [1,11]^3, unit sphere,\n"
   "                   torus (axis y, radii 1 and 0.4)\n"
@@ -72,16 +75,24 @@ static const char* usage =
   "  --edge-length    lattice cube edge l* in the isotropic space of the field\n"
   "  --vertices       pick l* so that the mesh has about N vertices\n"
   "  --field          identity (default); rotation-y (the paper's torus field Ry); fig8, fig9 (the\n"
-  "                   paper's Fig. 8 and 9 fields, for the domains cube and cube11); or a discrete\n"
-  "                   field, whose samples must cover the domain's bounding box:\n"
+  "                   paper's Fig. 8 and 9 fields, for the domains cube and cube11); cross (a\n"
+  "                   smooth cross field of the domain, aligned with its boundary, feature curves\n"
+  "                   and corners, computed on a background mesh; it prints its time, smoothness\n"
+  "                   energy, boundary alignment and singular edges); or a discrete field, whose\n"
+  "                   samples must cover the domain's bounding box (a field on a mesh is\n"
+  "                   interpolated in its tetrahedra, one of samples alone is the nearest sample's):\n"
   "                   X.mesh  a Medit mesh whose vertices carry the frames of --field-data FILE\n"
   "                           (default X.sol): a Medit .sol of frames (9 values, T row by row) or\n"
   "                           of metrics M (6 values, T = M^-1/2), or a file of 9 numbers a line,\n"
   "                           the frame vectors t1 t2 t3 one after the other\n"
   "                   FILE    any other file: one sample a line, x y z t11 t12 t13 t21 ... t33\n"
   "                           (T row by row)\n"
-  "  --write-field    write the field, sampled on a grid of spacing H over the domain's bounding\n"
-  "                   box, as a text file of samples, and exit\n"
+  "  --field-vertices the background mesh's vertices for --field cross (default 4000)\n"
+  "  --singularities  write the singular edges of --field cross (VTU line cells, for ParaView)\n"
+  "  --write-field    write the field and exit: a discrete field (cross or a file) as its samples\n"
+  "                   (OUT.txt, one sample a line) or with its mesh (OUT.mesh and OUT.sol, frames T\n"
+  "                   row by row); any field sampled on a grid of spacing H (--field-spacing) over\n"
+  "                   the domain's bounding box, as a text file of samples\n"
   "  --feature-angle  sharp-edge threshold in degrees (default 60)\n"
   "  --size-field     sizes (the largest edge) given at points: a file of lines 'x y z h', or a\n"
   "                   Medit X.mesh whose vertices carry the sizes of X.sol (one scalar a vertex,\n"
@@ -116,10 +127,10 @@ static const char* usage =
 
 struct Options
 {
-  std::string input, domain, lattice = "bcc", field = "identity", field_data, write_field, stats, size_field;
+  std::string input, domain, lattice = "bcc", field = "identity", field_data, write_field, stats, size_field, singularities;
   std::vector<std::string> outputs;
   std::string png;   // --png
-  double edge_length = 0., vertices = 0., feature_angle = 60., field_spacing = 0.;
+  double edge_length = 0., vertices = 0., feature_angle = 60., field_spacing = 0., field_vertices = 4000.;
   bool has_edge_length = false, has_vertices = false;
   double cells_across = LM::internal::Shape_sizing_parameters().cells_across;
   double surface_tolerance = LM::internal::Shape_sizing_parameters().surface_tolerance;
@@ -168,6 +179,8 @@ static Options parse(int argc, char** argv)
     else if(a == "--field-data") o.field_data = args.value(a);
     else if(a == "--write-field") o.write_field = args.value(a);
     else if(a == "--field-spacing") o.field_spacing = args.number(a);
+    else if(a == "--field-vertices") o.field_vertices = args.number(a);
+    else if(a == "--singularities") o.singularities = args.value(a);
     else if(a == "--feature-angle") o.feature_angle = args.number(a);
     else if(a == "--seed") o.seed = (unsigned int)args.integer(a, 0, std::numeric_limits<unsigned int>::max());
     else if(a == "--threads") o.threads = int(args.integer(a, 1, 1024));
@@ -193,10 +206,15 @@ static Options parse(int argc, char** argv)
     throw std::invalid_argument("--time-limit must be a positive number of seconds, got " + std::to_string(o.time_limit));
   if(o.input.empty() == o.domain.empty())
     throw std::invalid_argument("give either an input surface file or --domain cube|cube11|sphere|torus");
-  if(o.write_field.empty() != (o.field_spacing == 0.))
-    throw std::invalid_argument("--write-field OUT and --field-spacing H go together");
+  if(!(o.field_vertices >= 4.)) throw std::invalid_argument("--field-vertices must be at least 4, got " + std::to_string(o.field_vertices));
+  if(o.field != "cross" && (!o.singularities.empty() || o.field_vertices != 4000.))
+    throw std::invalid_argument("--singularities and --field-vertices go with --field cross");
+  if(o.write_field.empty() && o.field_spacing != 0.) throw std::invalid_argument("--field-spacing goes with --write-field");
   if(!o.write_field.empty()) {
-    if(!(o.field_spacing > 0.)) throw std::invalid_argument("--field-spacing must be positive");
+    const bool analytic = o.field == "identity" || o.field == "rotation-y" || o.field == "fig8" || o.field == "fig9";
+    if(analytic && o.field_spacing == 0.)
+      throw std::invalid_argument("--write-field with the analytic field '" + o.field + "' needs --field-spacing H, the grid's spacing");
+    if(o.field_spacing != 0. && !(o.field_spacing > 0.)) throw std::invalid_argument("--field-spacing must be positive");
     return o;   // no mesh: the other options do not apply
   }
   if(o.outputs.empty() && o.png.empty())
@@ -229,9 +247,31 @@ template <typename AnalyticField>
 static Field_choice analytic(const AnalyticField& f)
 { return { Field([f](const Point_3& p) { return Matrix_3(f.frame(p)); }), nullptr }; }
 
+// The cross field of the domain, with its figures; its singular edges to --singularities.
+template <typename Domain>
+static Field_choice cross_field(const Domain& domain, const Options& o)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const auto field = std::make_shared<const Discrete_field>(LM::compute_cross_field_3(domain,
+      CGAL::parameters::number_of_vertices(o.field_vertices).random_seed(o.seed).number_of_threads(o.threads)));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const LM::Frame_field_diagnostics d = LM::compute_frame_field_diagnostics(*field);
+  if(!o.quiet)
+    std::printf("lattice-mesh: cross field: %zu vertices, %zu tetrahedra, %.2f s; smoothness energy %.6g; boundary alignment "
+                "%.3f degrees mean, %.3f max; %zu singular edges\n", field->number_of_samples(), field->mesh().tets.size(), seconds,
+                d.energy, d.mean_boundary_alignment, d.max_boundary_alignment, d.singular_edges.size());
+  if(!o.singularities.empty()) {
+    std::ofstream os(o.singularities);
+    if(!os) throw std::runtime_error("cannot write '" + o.singularities + "'");
+    LM::write_vtu_segments(os, field->points(), d.singular_edges);
+  }
+  return { Field([field](const Point_3& p) { return field->frame(p); }), field };
+}
+
 static Field_choice make_field(const Options& o)
 {
   const std::string& name = o.field;
+  if(name == "cross") return analytic(LM::Constant_frame_field_3<Traits>());   // replaced in run(), with the domain's
   if(name == "identity") return analytic(LM::Constant_frame_field_3<Traits>());
   if(name == "rotation-y") return analytic(LM::Rotation_y_frame_field_3<Traits>());
   if(name == "fig8") return analytic(LM::Planar_layer_frame_field_3<Traits>());
@@ -239,7 +279,7 @@ static Field_choice make_field(const Options& o)
   if(!std::filesystem::exists(name))
     throw std::invalid_argument("--field " + name + ": " + (name.find_first_of("/.") != std::string::npos
       ? std::string("the field file does not exist") : std::string("unknown field"))
-      + " (expected identity, rotation-y, fig8, fig9 or a field file)");
+      + " (expected identity, rotation-y, fig8, fig9, cross or a field file)");
   const bool medit = std::filesystem::path(name).extension() == ".mesh";
   if(!medit && !o.field_data.empty())
     throw std::invalid_argument("--field-data goes with a Medit field mesh (--field X.mesh), not with '" + name + "'");
@@ -323,15 +363,19 @@ static Field shape_sized_field(const Domain& domain, const Field& field, LM::int
 }
 
 template <typename Domain>
-static int run(const Domain& domain, const Field_choice& choice, const Options& o)
+static int run(const Domain& domain, const Field_choice& given, const Options& o)
 {
   typedef CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> Mesher;
-  if(choice.samples) {
+  const Field_choice choice = o.field == "cross" ? cross_field(domain, o) : given;
+  if(choice.samples && o.field != "cross") {
     try { choice.samples->check_coverage(domain.bbox()); }
     catch(const std::invalid_argument& e) { throw std::invalid_argument("--field " + o.field + ": " + e.what()); }
   }
   if(!o.write_field.empty()) {
-    LM::write_frame_field_samples(o.write_field, choice.field, domain.bbox(), o.field_spacing);
+    const std::filesystem::path out(o.write_field);
+    if(o.field_spacing > 0.) LM::write_frame_field_samples(o.write_field, choice.field, domain.bbox(), o.field_spacing);
+    else if(out.extension() == ".mesh") LM::write_frame_field_to_medit(o.write_field, std::filesystem::path(out).replace_extension(".sol").string(), *choice.samples);
+    else LM::write_frame_field_samples(o.write_field, *choice.samples);
     if(!o.quiet) std::printf("lattice-mesh: wrote the field '%s' to '%s'\n", o.field.c_str(), o.write_field.c_str());
     return 0;
   }
@@ -420,7 +464,7 @@ int main(int argc, char** argv)
     const Options o = parse(argc, argv);
     // every output can be written, before the work
     std::vector<std::string> files = o.outputs;
-    for(const std::string& f : { o.stats, o.write_field, o.png }) if(!f.empty()) files.push_back(f);
+    for(const std::string& f : { o.stats, o.write_field, o.png, o.singularities }) if(!f.empty()) files.push_back(f);
     for(const std::string& f : files)
       if(!std::ofstream(f, std::ios::app)) throw std::runtime_error("cannot write '" + f + "'");
     const Field_choice field = make_field(o);

@@ -14,11 +14,18 @@
 #include <CGAL/lattice_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/Implicit_lattice_domain_3.h>
 #include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
+#include <CGAL/Lattice_mesher_3/compute_cross_field_3.h>
+#include <CGAL/Lattice_mesher_3/IO/frame_field.h>
 
 #include <gtest/gtest.h>
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <iostream>
+#include <iterator>
+#include <string>
 #include <random>
 #include <vector>
 
@@ -150,8 +157,57 @@ double frame_angle(const Eigen::Matrix3d& r, const Eigen::Matrix3d& s)
   return worst;
 }
 
+typedef CGAL::Lattice_mesher_traits_3<K> GT;
+typedef CGAL::Lattice_mesher_3::Discrete_frame_field_3<GT> Discrete_field;
+
+// Points drawn uniformly in the box [lo, hi]^3.
+std::vector<K::Point_3> random_points(int n, double lo, double hi, unsigned seed)
+{
+  std::mt19937 g(seed);
+  std::uniform_real_distribution<double> u(lo, hi);
+  std::vector<K::Point_3> p;
+  for(int i = 0; i < n; ++i) { const double x = u(g), y = u(g); p.emplace_back(x, y, u(g)); }
+  return p;
+}
+
+const CGAL::Lattice_mesher_3::Implicit_lattice_domain_3<K, CGAL::Lattice_mesher_3::Implicit_sphere_3<K> >& ball()
+{
+  namespace LM = CGAL::Lattice_mesher_3;
+  static const LM::Implicit_lattice_domain_3<K, LM::Implicit_sphere_3<K> > b(LM::Implicit_sphere_3<K>{ K::Point_3(0., 0., 0.), 1. },
+                                                                            CGAL::Bbox_3(-1, -1, -1, 1, 1, 1));
+  return b;
+}
+
+const Discrete_field& ball_field()
+{
+  static const Discrete_field f = CGAL::Lattice_mesher_3::compute_cross_field_3(ball(), CGAL::parameters::edge_length(0.25));
+  return f;
+}
+
+TEST(Octahedral_frames, BestCubeRotationUndoesACubeRotation)
+{
+  const std::vector<Eigen::Matrix3d> r = random_rotations(50, 11);
+  std::vector<Eigen::Matrix3d> cube;   // the 24 rotations of the cube: signed permutations of determinant 1
+  for(const Eigen::Matrix3d& m : r) {
+    Eigen::Matrix3d p = LMi::best_cube_rotation(m);
+    EXPECT_NEAR(p.determinant(), 1., 1e-12);
+    EXPECT_TRUE((p.transpose() * p).isIdentity(1e-12));
+    if(std::find_if(cube.begin(), cube.end(), [&](const Eigen::Matrix3d& q) { return q.isApprox(p); }) == cube.end()) cube.push_back(p);
+  }
+  for(std::size_t i = 0; i < r.size(); ++i) {
+    // r_i P is the representative of r_i's frame nearest to r_0: no other does better
+    const Eigen::Matrix3d p = LMi::best_cube_rotation(r[0].transpose() * r[i]);
+    const double best = (r[0].transpose() * r[i] * p).trace();
+    for(const Eigen::Matrix3d& q : cube) EXPECT_LE((r[0].transpose() * r[i] * q).trace(), best + 1e-12);
+    // and it undoes a cube rotation applied to r_0
+    const Eigen::Matrix3d& q = cube[i % cube.size()];
+    EXPECT_TRUE((r[0] * q * LMi::best_cube_rotation(q)).isApprox(r[0], 1e-12));
+  }
+  EXPECT_GE(cube.size(), 12u);
+}
+
 // On a cube, whose creases and corners hold the whole frame, the smooth field is the identity
-// (up to the cube's symmetries) everywhere; its energy falls across the iterations.
+// (up to the cube's symmetries) everywhere, between the samples too; it has no singular edge.
 TEST(Cross_field, CubeFieldIsTheIdentity)
 {
   namespace LM = CGAL::Lattice_mesher_3;
@@ -161,36 +217,113 @@ TEST(Cross_field, CubeFieldIsTheIdentity)
   std::size_t full = 0;
   for(const LMi::Frame_constraint& c : constraints) full += c.kind == LMi::Frame_constraint::FULL;
   EXPECT_GT(full, 8u);
-  const LMi::Cross_field_result field = LMi::Cross_field_solver(mesh, constraints).solve(20);
+  const Discrete_field field = LM::compute_cross_field_3(cube, CGAL::parameters::edge_length(0.2).number_of_iterations(20));
+  EXPECT_EQ(field.mesh().tets.size(), mesh.tets.size());
   double worst = 0.;
-  for(const Eigen::Matrix3d& r : field.rotations) worst = (std::max)(worst, frame_angle(r, Eigen::Matrix3d::Identity()));
+  for(const Eigen::Matrix3d& r : field.frames()) worst = (std::max)(worst, frame_angle(r, Eigen::Matrix3d::Identity()));
+  for(const K::Point_3& p : random_points(2000, 0., 1., 3)) worst = (std::max)(worst, frame_angle(field.frame(p), Eigen::Matrix3d::Identity()));
   EXPECT_LT(worst, 1.);
-  ASSERT_GE(field.energies.size(), 1u);
-  EXPECT_LT(field.energies.back(), 1e-6);
+  const LM::Frame_field_diagnostics d = LM::compute_frame_field_diagnostics(field);
+  EXPECT_LT(d.energy, 1e-6);
+  EXPECT_LT(d.max_boundary_alignment, 1.);
+  EXPECT_TRUE(d.singular_edges.empty()) << d.singular_edges.size() << " singular edges";
   std::cout << "  cube: " << mesh.points.size() << " vertices, largest angle to the identity " << worst << " degrees\n";
 }
 
+// Between the samples the field is a rotation times the interpolated size: here a rotation, and
+// twice one for the frames doubled.
+TEST(Cross_field, InterpolatedFrameIsARotationTimesTheSize)
+{
+  const Discrete_field& field = ball_field();
+  std::vector<Eigen::Matrix3d> doubled;
+  for(const Eigen::Matrix3d& t : field.frames()) doubled.push_back(2. * t);
+  const Discrete_field twice(field.mesh(), doubled);
+  std::size_t checked = 0;
+  for(const K::Point_3& p : random_points(3000, -1.1, 1.1, 5)) {
+    const Eigen::Matrix3d t = field.frame(p), t2 = twice.frame(p);
+    ASSERT_TRUE((t.transpose() * t).isIdentity(1e-9)) << p << "\n" << t;
+    ASSERT_NEAR(t.determinant(), 1., 1e-9) << p;
+    ASSERT_TRUE((t2.transpose() * t2).isApprox(4. * Eigen::Matrix3d::Identity(), 1e-9)) << p << "\n" << t2;
+    checked += 1;
+  }
+  EXPECT_EQ(checked, 3000u);
+  // at a sample, its own frame
+  for(std::size_t i = 0; i < field.number_of_samples(); i += 7)
+    EXPECT_LT(frame_angle(field.frame(field.points()[i]), field.frames()[i]), 1e-6) << i;
+}
+
+// A field saved in either format reads back to the same frames at the samples, and the Medit
+// format, which keeps the tetrahedra, to the same field between them.
+TEST(Cross_field, SavedFieldReloadsToTheSameFrames)
+{
+  namespace LM = CGAL::Lattice_mesher_3;
+  const Discrete_field& field = ball_field();
+  const std::string mesh_file = ::testing::TempDir() + "cross_field.mesh", sol = ::testing::TempDir() + "cross_field.sol",
+                    text = ::testing::TempDir() + "cross_field.txt";
+  LM::write_frame_field_to_medit(mesh_file, sol, field);
+  LM::write_frame_field_samples(text, field);
+  const Discrete_field medit = LM::read_frame_field_from_medit<GT>(mesh_file, sol);
+  const Discrete_field samples = LM::read_frame_field_samples<GT>(text);
+  EXPECT_EQ(medit.points(), field.points());
+  EXPECT_EQ(medit.frames(), field.frames());
+  EXPECT_EQ(medit.mesh().tets, field.mesh().tets);
+  EXPECT_EQ(samples.points(), field.points());
+  EXPECT_EQ(samples.frames(), field.frames());
+  for(const K::Point_3& p : random_points(500, -1., 1., 7)) ASSERT_EQ(medit.frame(p), field.frame(p)) << p;
+  for(const std::string& f : { mesh_file, sol, text }) std::remove(f.c_str());
+}
+
 // On a sphere every boundary frame has an axis along the normal, and the MBO iterations lower
-// the energy of the initial projection by a tenth at least.
+// the energy of the initial projection by a tenth at least, never raising it.
 TEST(Cross_field, SphereFieldIsAlignedWithTheNormal)
 {
   namespace LM = CGAL::Lattice_mesher_3;
-  const LM::Implicit_lattice_domain_3<K, LM::Implicit_sphere_3<K> > ball(LM::Implicit_sphere_3<K>{ K::Point_3(0., 0., 0.), 1. },
-                                                                         CGAL::Bbox_3(-1, -1, -1, 1, 1, 1));
-  const LM::Tetrahedral_mesh_3<K::Point_3> mesh = CGAL::lattice_mesh_3(ball, Identity(), CGAL::parameters::edge_length(0.25));
-  const LMi::Cross_field_result field = LMi::Cross_field_solver(mesh, LMi::boundary_frame_constraints(mesh, ball)).solve(60);
+  const LM::Tetrahedral_mesh_3<K::Point_3> mesh = CGAL::lattice_mesh_3(ball(), Identity(), CGAL::parameters::edge_length(0.25));
+  const LMi::Cross_field_result solved = LMi::Cross_field_solver(mesh, LMi::boundary_frame_constraints(mesh, ball())).solve(60);
+  ASSERT_GE(solved.energies.size(), 2u);
+  EXPECT_LT(solved.energies.back(), 0.9 * solved.energies.front());
+  for(std::size_t k = 1; k < solved.energies.size(); ++k) EXPECT_LE(solved.energies[k], solved.energies[k - 1]) << "iteration " << k;
+
+  const Discrete_field& field = ball_field();
   double worst = 0.;
-  std::vector<char> on_boundary(mesh.points.size(), 0);
-  for(const auto& f : mesh.boundary_faces) for(int v : f) on_boundary[std::size_t(v)] = 1;
-  for(std::size_t v = 0; v < mesh.points.size(); ++v)
-    if(on_boundary[v]) worst = (std::max)(worst, LMi::angle_to_nearest_axis(field.rotations[v], LMi::to_eigen(mesh.points[v])));
+  const LM::Tetrahedral_mesh_3<K::Point_3>& background = field.mesh();
+  for(const auto& f : background.boundary_faces)
+    for(int v : f) worst = (std::max)(worst, LMi::angle_to_nearest_axis(field.frames()[std::size_t(v)], LMi::to_eigen(background.points[std::size_t(v)])));
   EXPECT_LT(worst, 2.);
-  ASSERT_GE(field.energies.size(), 2u);
-  EXPECT_LT(field.energies.back(), 0.9 * field.energies.front());
-  for(std::size_t k = 1; k < field.energies.size(); ++k) EXPECT_LE(field.energies[k], field.energies[k - 1]) << "iteration " << k;
-  std::cout << "  ball: " << mesh.points.size() << " vertices, " << field.energies.size() - 1 << " iterations, energy "
-            << field.energies.front() << " -> " << field.energies.back() << ", largest boundary angle to the normal " << worst
-            << " degrees\n";
+  // a ball's field cannot be smooth everywhere: it has singular curves
+  const LM::Frame_field_diagnostics d = LM::compute_frame_field_diagnostics(field);
+  EXPECT_GT(d.singular_edges.size(), 0u);
+  EXPECT_LT(d.mean_boundary_alignment, 5.);
+  std::cout << "  ball: " << background.points.size() << " vertices, " << solved.energies.size() - 1 << " iterations, energy "
+            << solved.energies.front() << " -> " << solved.energies.back() << ", largest boundary angle to the normal " << worst
+            << " degrees; on the faces " << d.mean_boundary_alignment << " mean, " << d.max_boundary_alignment << " max; "
+            << d.singular_edges.size() << " singular edges\n";
+}
+
+// lattice-mesh --field cross: prints the field's figures, writes its singular edges and the
+// field, which meshes again from the file; the options that go with it are refused without it.
+TEST(Cross_field_program, ComputesSavesAndReusesTheField)
+{
+  const std::string dir = ::testing::TempDir(), exe = LATTICE_MESH_EXECUTABLE;
+  const std::string field = dir + "lm_cross.mesh", edges = dir + "lm_cross_singular.vtu", log = dir + "lm_cross.txt";
+  auto text = [](const std::string& file) {
+    std::ifstream is(file);
+    return std::string((std::istreambuf_iterator<char>(is)), std::istreambuf_iterator<char>());
+  };
+  ASSERT_EQ(std::system((exe + " --domain sphere --field cross --field-vertices 800 --write-field " + field +
+                         " --singularities " + edges + " > " + log).c_str()), 0);
+  const std::string printed = text(log);
+  for(const char* figure : { "cross field: ", "smoothness energy", "boundary alignment", "singular edges" })
+    EXPECT_NE(printed.find(figure), std::string::npos) << printed;
+  const std::string vtu = text(edges);
+  EXPECT_NE(vtu.find("<VTKFile type=\"UnstructuredGrid\""), std::string::npos);
+  EXPECT_EQ(vtu.find("NumberOfCells=\"0\""), std::string::npos) << "a ball's field has singular edges";
+  const Discrete_field saved = CGAL::Lattice_mesher_3::read_frame_field_from_medit<GT>(field, dir + "lm_cross.sol");
+  EXPECT_GT(saved.mesh().tets.size(), 0u);
+  for(const Eigen::Matrix3d& t : saved.frames()) ASSERT_TRUE((t.transpose() * t).isIdentity(1e-9)) << t;
+  EXPECT_EQ(std::system((exe + " --domain sphere --field " + field + " --vertices 1500 --quiet -o " + dir + "lm_cross_out.mesh").c_str()), 0);
+  EXPECT_NE(std::system((exe + " --domain sphere --vertices 1500 --singularities " + edges + " -o " + dir + "lm_x.mesh 2> " + log).c_str()), 0);
+  EXPECT_NE(text(log).find("--singularities and --field-vertices go with --field cross"), std::string::npos) << text(log);
 }
 
 } // namespace

@@ -181,7 +181,7 @@ TEST(Discrete_frame_field, rejects_bad_samples)
 {
   const Matrix_3 I = Matrix_3::Identity();
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  expect_error<std::invalid_argument>([&] { Discrete_field({}, {}); }, { "at least one" });
+  expect_error<std::invalid_argument>([&] { Discrete_field(std::vector<Point_3>(), {}); }, { "at least one" });
   expect_error<std::invalid_argument>([&] { Discrete_field({ Point_3(0, 0, 0) }, { I, I }); }, { "1 points and 2 frames" });
   expect_error<std::invalid_argument>([&] { Discrete_field({ Point_3(0, 0, 0), Point_3(nan, 0, 0) }, { I, I }); },
                                       { "sample 1", "non-finite point" });

@@ -220,6 +220,28 @@ inline bool starts_like_medit(std::istream& is)
   return token == "MeshVersionFormatted";
 }
 
+// Writes v with the shortest decimal form that reads back to the same double, then `separator`.
+inline void put_double(std::ostream& os, double v, char separator)
+{
+  char buffer[32];
+  const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof(buffer), v);
+  os.write(buffer, r.ptr - buffer);
+  os.put(separator);
+}
+
+inline std::ofstream open_output_file(const std::string& function, const std::string& filename)
+{
+  std::ofstream os(filename);
+  if(!os) throw std::runtime_error(function + ": cannot write '" + filename + "'");
+  return os;
+}
+
+inline void close_output_file(const std::string& function, const std::string& filename, std::ofstream& os)
+{
+  os.close();
+  if(!os) throw std::runtime_error(function + ": error while writing '" + filename + "'");
+}
+
 } // namespace internal
 
 /*!
@@ -277,6 +299,8 @@ by `read_medit()`), with the frames in `data_file`, which is either
   frame-field generators write their frames; '#' starts a comment.
 
 The kind of `data_file` is recognized by its first keyword (`MeshVersionFormatted` for `.sol`).
+If the mesh has tetrahedra, the field interpolates the frames in them (see
+`Discrete_frame_field_3`). `write_frame_field_to_medit()` writes these two files.
 
 \throws std::runtime_error naming the file and the line (in a `.sol` file, the line of the
 vertex's last value), for a missing, truncated or garbled file, a count of frames that differs
@@ -299,7 +323,7 @@ Discrete_frame_field_3<GT> read_frame_field_from_medit(const std::string& mesh_f
     frames = internal::read_sol_frames(is, mesh.points, function + ": '" + data_file + "'");
   else
     frames = internal::read_plain_frames(is, mesh.points, function, data_file);
-  return Discrete_frame_field_3<GT>(std::move(mesh.points), std::move(frames));
+  return Discrete_frame_field_3<GT>(std::move(mesh), std::move(frames));
 }
 
 /*!
@@ -338,16 +362,10 @@ void write_frame_field_samples(const std::string& filename, const FrameField& fi
     return i + 1 == count[a] ? hi : lo + (hi - lo) * double(i) / double(count[a] - 1);
   };
 
-  std::ofstream os(filename);
-  if(!os) throw std::runtime_error(function + ": cannot write '" + filename + "'");
+  std::ofstream os = internal::open_output_file(function, filename);
   os << "# frame field samples: x y z t11 t12 t13 t21 t22 t23 t31 t32 t33 (T row by row, its columns are the\n"
         "# lattice cube edges), on a " << count[0] << " x " << count[1] << " x " << count[2] << " grid\n";
-  char buffer[32];
-  auto put = [&](double v, char separator) {
-    const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof(buffer), v);
-    os.write(buffer, r.ptr - buffer);
-    os.put(separator);
-  };
+  auto put = [&](double v, char separator) { internal::put_double(os, v, separator); };
   for(std::size_t i = 0; i < count[0]; ++i)
     for(std::size_t j = 0; j < count[1]; ++j)
       for(std::size_t k = 0; k < count[2]; ++k) {
@@ -357,7 +375,59 @@ void write_frame_field_samples(const std::string& filename, const FrameField& fi
         for(int r = 0; r < 3; ++r)
           for(int c = 0; c < 3; ++c) put(t(r, c), r == 2 && c == 2 ? '\n' : ' ');
       }
-  if(!os) throw std::runtime_error(function + ": error while writing '" + filename + "'");
+  internal::close_output_file(function, filename, os);
+}
+
+/*!
+\ingroup PkgLatticeMesher3IO
+Writes the samples of `field` in the format `read_frame_field_samples()` reads (one line
+`x y z t11 ... t33` a sample), with the shortest decimal forms that read back to the same doubles.
+A field built on a tetrahedral mesh loses its tetrahedra in this format: read back, it is the
+field of its samples alone; `write_frame_field_to_medit()` keeps them.
+\throws std::runtime_error naming the file if it cannot be written
+*/
+template <typename GT>
+void write_frame_field_samples(const std::string& filename, const Discrete_frame_field_3<GT>& field)
+{
+  const std::string function = "write_frame_field_samples()";
+  std::ofstream os = internal::open_output_file(function, filename);
+  os << "# frame field samples: x y z t11 t12 t13 t21 t22 t23 t31 t32 t33 (T row by row, its columns are the\n"
+        "# lattice cube edges), " << field.number_of_samples() << " samples\n";
+  for(std::size_t i = 0; i < field.number_of_samples(); ++i) {
+    const auto& p = field.points()[i];
+    const Eigen::Matrix3d& t = field.frames()[i];
+    internal::put_double(os, p.x(), ' '); internal::put_double(os, p.y(), ' '); internal::put_double(os, p.z(), ' ');
+    for(int r = 0; r < 3; ++r)
+      for(int c = 0; c < 3; ++c) internal::put_double(os, t(r, c), r == 2 && c == 2 ? '\n' : ' ');
+  }
+  internal::close_output_file(function, filename, os);
+}
+
+/*!
+\ingroup PkgLatticeMesher3IO
+Writes `field` as `read_frame_field_from_medit()` reads it: its samples' mesh (`field.mesh()`,
+with its tetrahedra) to the Medit file `mesh_file`, and the frames to the Medit solution file
+`data_file` (one `SolAtVertices` field of type 4: T row by row), with the shortest decimal forms
+that read back to the same doubles.
+\throws std::runtime_error naming the file if one cannot be written
+*/
+template <typename GT>
+void write_frame_field_to_medit(const std::string& mesh_file, const std::string& data_file,
+                                const Discrete_frame_field_3<GT>& field)
+{
+  const std::string function = "write_frame_field_to_medit()";
+  {
+    std::ofstream os = internal::open_output_file(function, mesh_file);
+    write_medit(os, field.mesh());
+    internal::close_output_file(function, mesh_file, os);
+  }
+  std::ofstream os = internal::open_output_file(function, data_file);
+  os << "MeshVersionFormatted 2\n\nDimension 3\n\nSolAtVertices\n" << field.number_of_samples() << "\n1 4\n";
+  for(const Eigen::Matrix3d& t : field.frames())
+    for(int r = 0; r < 3; ++r)
+      for(int c = 0; c < 3; ++c) internal::put_double(os, t(r, c), r == 2 && c == 2 ? '\n' : ' ');
+  os << "\nEnd\n";
+  internal::close_output_file(function, data_file, os);
 }
 
 } // namespace Lattice_mesher_3

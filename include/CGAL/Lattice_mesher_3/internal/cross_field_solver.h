@@ -36,8 +36,7 @@ namespace Lattice_mesher_3 {
 namespace internal {
 
 // What constrains a vertex's frame: nothing (inside), an axis along a direction (a boundary
-// normal, or a feature curve's tangent), or the whole frame (a crease or corner whose normals are
-// about orthogonal).
+// normal), or the whole frame (a crease or a corner).
 struct Frame_constraint
 {
   enum Kind { FREE, AXIS, FULL } kind = FREE;
@@ -47,35 +46,27 @@ struct Frame_constraint
 
 // The constraints of the boundary vertices of a mesh of `domain`: the area-weighted normals of
 // their boundary faces, patch by patch (`boundary_patches`, one patch without them). One patch:
-// the domain's normal there (the faces' if it points inward). Two: the
-// frame [n1, n2, n1 x n2] made orthogonal (polar factor) if the normals are 75 to 105 degrees
-// apart, else the crease's direction n1 x n2. Three about orthogonal normals: their frame; any
-// other corner is free.
+// the domain's normal there (the faces' if it points inward). Two (a crease): the frame with an
+// axis along the crease whose other two axes make 45 degrees with the normals' bisector, the
+// frame nearest to both normals (each |alpha / 2 - 45| degrees away for normals alpha apart).
+// Three (a corner): the frame nearest to the corner's three edges, the creases n_i x n_j.
+// A vertex on more patches, or whose normals are about parallel, is free.
 template <typename Point_3, typename Domain>
-std::vector<Frame_constraint> boundary_frame_constraints(const Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain)
+std::vector<Frame_constraint> boundary_frame_constraints(const Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain,
+                                                         bool align_to_features = true)
 {
   std::vector<std::map<int, Eigen::Vector3d> > normals(mesh.points.size());
   for(std::size_t k = 0; k < mesh.boundary_faces.size(); ++k) {
     const std::array<int, 3>& f = mesh.boundary_faces[k];
     const Eigen::Vector3d a = to_eigen(mesh.points[f[0]]), b = to_eigen(mesh.points[f[1]]), c = to_eigen(mesh.points[f[2]]);
     const Eigen::Vector3d n = (b - a).cross(c - a);   // twice the area, outward
-    const int patch = label(mesh.boundary_patches, std::ptrdiff_t(k));
+    const int patch = align_to_features ? label(mesh.boundary_patches, std::ptrdiff_t(k)) : 1;
     for(int v : f) {
       auto it = normals[std::size_t(v)].emplace(patch, Eigen::Vector3d::Zero()).first;
       it->second += n;
     }
   }
-  const double orthogonal = 0.26;   // |cos| of 75 degrees
-  auto polar = [](const Eigen::Matrix3d& m) {
-    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(m, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    Eigen::Matrix3d r = svd.matrixU() * svd.matrixV().transpose();
-    if(r.determinant() < 0.) {
-      Eigen::Matrix3d u = svd.matrixU();
-      u.col(2) *= -1.;
-      r = u * svd.matrixV().transpose();
-    }
-    return r;
-  };
+  const double parallel = 1e-3;   // |sin| of 0.06 degrees
   std::vector<Frame_constraint> constraints(mesh.points.size());
   for(std::size_t v = 0; v < mesh.points.size(); ++v) {
     std::vector<Eigen::Vector3d> n;
@@ -88,23 +79,47 @@ std::vector<Frame_constraint> boundary_frame_constraints(const Tetrahedral_mesh_
     }
     else if(n.size() == 2) {
       const Eigen::Vector3d t = n[0].cross(n[1]);
-      if(std::abs(n[0].dot(n[1])) < orthogonal) {
-        Eigen::Matrix3d m;
-        m << n[0], n[1], t.normalized();
-        c.kind = Frame_constraint::FULL;
-        c.frame = polar(m);
-      }
-      else if(t.norm() > 1e-12) { c.kind = Frame_constraint::AXIS; c.axis = t.normalized(); }
-    }
-    else if(n.size() == 3 && std::abs(n[0].dot(n[1])) < orthogonal && std::abs(n[0].dot(n[2])) < orthogonal &&
-            std::abs(n[1].dot(n[2])) < orthogonal) {
+      if(t.norm() < parallel) continue;
+      const Eigen::Vector3d b = (n[0] + n[1]).normalized(), e = t.normalized().cross(b);
       Eigen::Matrix3d m;
-      m << n[0], n[1], n[2];
+      m << (b + e) / std::sqrt(2.), (b - e) / std::sqrt(2.), t.normalized();
       c.kind = Frame_constraint::FULL;
-      c.frame = polar(m);
+      c.frame = frame_rotation_of_axes(m);
+    }
+    else if(n.size() == 3) {
+      Eigen::Matrix3d m;
+      m << n[0].cross(n[1]), n[1].cross(n[2]), n[2].cross(n[0]);
+      if(m.colwise().norm().minCoeff() < parallel) continue;
+      m.colwise().normalize();
+      if(std::abs(m.determinant()) < 0.1) continue;   // about coplanar edges: no frame fits them
+      c.kind = Frame_constraint::FULL;
+      c.frame = frame_rotation_of_axes(m);
     }
   }
   return constraints;
+}
+
+// The edges of a tetrahedral mesh, each weighted by the number of tetrahedra around it.
+typedef std::vector<std::pair<std::pair<int, int>, double> > Weighted_edges;
+
+template <typename Point_3>
+Weighted_edges weighted_edges(const Tetrahedral_mesh_3<Point_3>& mesh)
+{
+  std::map<std::pair<int, int>, double> weights;
+  for(const std::array<int, 4>& t : mesh.tets)
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j) weights[std::minmax(t[i], t[j])] += 1.;
+  return Weighted_edges(weights.begin(), weights.end());
+}
+
+// The smoothness energy 1/2 sum_ij w_ij |q_i - q_j|^2 of the frames (rotations) at the vertices.
+inline double frame_field_energy(const Weighted_edges& edges, const std::vector<Eigen::Matrix3d>& rotations)
+{
+  std::vector<Sh9> q(rotations.size());
+  for(std::size_t v = 0; v < rotations.size(); ++v) q[v] = frame_coefficients(rotations[v]);
+  double e = 0.;
+  for(const auto& edge : edges) e += .5 * edge.second * (q[std::size_t(edge.first.first)] - q[std::size_t(edge.first.second)]).squaredNorm();
+  return e;
 }
 
 // The frame field of a mesh: per vertex a rotation whose columns are the frame's axes, and the
@@ -123,11 +138,7 @@ public:
   Cross_field_solver(const Tetrahedral_mesh_3<Point_3>& mesh, std::vector<Frame_constraint> constraints)
     : n_(mesh.points.size()), constraints_(std::move(constraints))
   {
-    std::map<std::pair<int, int>, double> weights;   // per edge, the number of its tetrahedra
-    for(const std::array<int, 4>& t : mesh.tets)
-      for(int i = 0; i < 4; ++i)
-        for(int j = i + 1; j < 4; ++j) weights[std::minmax(t[i], t[j])] += 1.;
-    edges_.assign(weights.begin(), weights.end());
+    edges_ = weighted_edges(mesh);
     lambda1_ = first_eigenvalue(mesh, edges_);
     // the unknowns: q_v = B_v x_v + f_v, 9, 2 (an axis along a) or 0 (a fixed frame) per vertex
     basis_.resize(n_);
@@ -152,7 +163,7 @@ public:
   Cross_field_result solve(int iterations)
   {
     Cross_field_result result;
-    Eigen::VectorXd x = minimize(0., std::vector<Sh9>(n_, Sh9::Zero()));
+    Eigen::VectorXd x = minimize(0., std::vector<Sh9>(n_, Sh9::Zero()), Eigen::VectorXd());
     result.rotations.resize(n_);
     for(std::size_t v = 0; v < n_; ++v) result.rotations[v] = project(v, coefficients(v, x), nullptr);
     result.energies.push_back(energy(result.rotations));
@@ -162,7 +173,7 @@ public:
     for(int k = 1; k <= iterations; ++k) {
       std::vector<Sh9> p(n_);
       for(std::size_t v = 0; v < n_; ++v) p[v] = frame_coefficients(result.rotations[v]);
-      x = minimize(tau0 / (double(k) * k * k), p);
+      x = minimize(tau0 / (double(k) * k * k), p, x);
       for(std::size_t v = 0; v < n_; ++v) result.rotations[v] = project(v, coefficients(v, x), &result.rotations[v]);
       result.energies.push_back(energy(result.rotations));
       if(result.energies.back() < best_energy) { best_energy = result.energies.back(); best = result.rotations; }
@@ -199,54 +210,71 @@ private:
     return q.dot(frame_coefficients(cold)) > fit ? cold : warm;
   }
 
-  double energy(const std::vector<Eigen::Matrix3d>& rotations) const
-  {
-    std::vector<Sh9> q(n_);
-    for(std::size_t v = 0; v < n_; ++v) q[v] = frame_coefficients(rotations[v]);
-    double e = 0.;
-    for(const auto& edge : edges_) e += .5 * edge.second * (q[std::size_t(edge.first.first)] - q[std::size_t(edge.first.second)]).squaredNorm();
-    return e;
-  }
+  double energy(const std::vector<Eigen::Matrix3d>& rotations) const { return frame_field_energy(edges_, rotations); }
 
   // argmin_x 1/2 sum_v |q_v - p_v|^2 + tau/2 sum_ij w_ij |q_i - q_j|^2 (tau = 0: the harmonic
-  // field, 1/2 sum_ij w_ij |q_i - q_j|^2 alone) with q_v = B_v x_v + f_v.
-  Eigen::VectorXd minimize(double tau, const std::vector<Sh9>& p) const
+  // field, 1/2 sum_ij w_ij |q_i - q_j|^2 alone) with q_v = B_v x_v + f_v: (M + tau L) x =
+  // M_p + tau b_L, with L, b_L and M assembled once. Started from `guess`; the conjugate
+  // gradient is preconditioned by an incomplete Cholesky factorization where the diffusion
+  // dominates (tau lambda_1 > 1), by the diagonal otherwise, where M keeps the system well
+  // conditioned.
+  Eigen::VectorXd minimize(double tau, const std::vector<Sh9>& p, const Eigen::VectorXd& guess)
   {
     const int size = offset_[n_];
     if(size == 0) return Eigen::VectorXd();
-    const double mass = tau > 0. ? 1. : 0., stiffness = tau > 0. ? tau : 1.;
+    if(stiffness_.rows() == 0) assemble();
+    Sparse a = tau > 0. ? Sparse(mass_ + tau * stiffness_) : stiffness_;
+    Eigen::VectorXd b = tau > 0. ? Eigen::VectorXd(tau * stiffness_rhs_) : stiffness_rhs_;
+    if(tau > 0.)
+      for(std::size_t v = 0; v < n_; ++v)
+        if(basis_[v].cols() > 0) b.segment(offset_[v], basis_[v].cols()) += basis_[v].transpose() * (p[v] - fixed_[v]);
+    const double tolerance = 1e-8;
+    if(tau == 0. || tau * lambda1_ > 1.) {
+      Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double> > cg;
+      cg.setTolerance(tolerance);
+      cg.setMaxIterations(2000);
+      cg.compute(a);
+      return guess.size() == size ? Eigen::VectorXd(cg.solveWithGuess(b, guess)) : Eigen::VectorXd(cg.solve(b));
+    }
+    Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper> cg;
+    cg.setTolerance(tolerance);
+    cg.setMaxIterations(2000);
+    cg.compute(a);
+    return guess.size() == size ? Eigen::VectorXd(cg.solveWithGuess(b, guess)) : Eigen::VectorXd(cg.solve(b));
+  }
+
+  // M = diag(B_v^T B_v); L and b_L from the edges: sum_ij w_ij |B_i x_i + f_i - B_j x_j - f_j|^2 / 2
+  // = x^T L x / 2 - b_L^T x + const.
+  void assemble()
+  {
+    const int size = offset_[n_];
     std::vector<Eigen::Triplet<double> > triplets;
-    Eigen::VectorXd b = Eigen::VectorXd::Zero(size);
+    stiffness_rhs_ = Eigen::VectorXd::Zero(size);
     auto add_block = [&](std::size_t i, std::size_t j, const Eigen::MatrixXd& m) {
       for(int r = 0; r < m.rows(); ++r)
         for(int c = 0; c < m.cols(); ++c) triplets.emplace_back(offset_[i] + r, offset_[j] + c, m(r, c));
     };
-    for(std::size_t v = 0; v < n_; ++v) {
-      if(mass == 0. || basis_[v].cols() == 0) continue;
-      add_block(v, v, mass * basis_[v].transpose() * basis_[v]);
-      b.segment(offset_[v], basis_[v].cols()) += mass * basis_[v].transpose() * (p[v] - fixed_[v]);
-    }
+    for(std::size_t v = 0; v < n_; ++v)
+      if(basis_[v].cols() > 0) add_block(v, v, basis_[v].transpose() * basis_[v]);
+    mass_.resize(size, size);
+    mass_.setFromTriplets(triplets.begin(), triplets.end());
+    triplets.clear();
     for(const auto& edge : edges_) {
       const std::size_t i = std::size_t(edge.first.first), j = std::size_t(edge.first.second);
-      const double w = stiffness * edge.second;
+      const double w = edge.second;
       const Eigen::MatrixXd& bi = basis_[i];
       const Eigen::MatrixXd& bj = basis_[j];
       const Sh9 df = fixed_[i] - fixed_[j];
-      if(bi.cols() > 0) { add_block(i, i, w * bi.transpose() * bi); b.segment(offset_[i], bi.cols()) -= w * bi.transpose() * df; }
-      if(bj.cols() > 0) { add_block(j, j, w * bj.transpose() * bj); b.segment(offset_[j], bj.cols()) += w * bj.transpose() * df; }
+      if(bi.cols() > 0) { add_block(i, i, w * bi.transpose() * bi); stiffness_rhs_.segment(offset_[i], bi.cols()) -= w * bi.transpose() * df; }
+      if(bj.cols() > 0) { add_block(j, j, w * bj.transpose() * bj); stiffness_rhs_.segment(offset_[j], bj.cols()) += w * bj.transpose() * df; }
       if(bi.cols() > 0 && bj.cols() > 0) {
         const Eigen::MatrixXd m = -w * bi.transpose() * bj;
         add_block(i, j, m);
         add_block(j, i, m.transpose());
       }
     }
-    Sparse a(size, size);
-    a.setFromTriplets(triplets.begin(), triplets.end());
-    Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double> > cg;
-    cg.setTolerance(1e-10);
-    cg.setMaxIterations(2000);
-    cg.compute(a);
-    return cg.solve(b);
+    stiffness_.resize(size, size);
+    stiffness_.setFromTriplets(triplets.begin(), triplets.end());
   }
 
   // About lambda_1, the smallest nonzero eigenvalue of the graph Laplacian (unit masses): the
@@ -254,7 +282,7 @@ private:
   // a small factor (for a box, the first eigenvector is that coordinate's cosine).
   template <typename Point_3>
   static double first_eigenvalue(const Tetrahedral_mesh_3<Point_3>& mesh,
-                                 const std::vector<std::pair<std::pair<int, int>, double> >& edges)
+                                 const Weighted_edges& edges)
   {
     Eigen::MatrixXd x(mesh.points.size(), 3);
     for(std::size_t v = 0; v < mesh.points.size(); ++v) x.row(Eigen::Index(v)) = to_eigen(mesh.points[v]).transpose();
@@ -270,10 +298,12 @@ private:
   std::size_t n_;
   double lambda1_ = 1.;
   std::vector<Frame_constraint> constraints_;
-  std::vector<std::pair<std::pair<int, int>, double> > edges_;
+  Weighted_edges edges_;
   std::vector<Eigen::MatrixXd> basis_;
   std::vector<int> offset_;
   std::vector<Sh9> fixed_;
+  Sparse mass_, stiffness_;
+  Eigen::VectorXd stiffness_rhs_;
 };
 
 } // namespace internal

@@ -197,6 +197,68 @@ inline double angle_to_nearest_axis(const Eigen::Matrix3d& r, const Eigen::Vecto
   return std::atan2(std::hypot(w[(k + 1) % 3], w[(k + 2) % 3]), w[k]) * 180. / 3.14159265358979323846;
 }
 
+// The rotation of the polar decomposition m = R S (S symmetric positive semi-definite), for m
+// of positive determinant: the rotation nearest to m. Newton's iteration X <- (X + X^-T) / 2,
+// which converges quadratically from a well-conditioned m (a few steps from a near-rotation,
+// several times faster than an SVD); an SVD for an ill-conditioned one.
+inline Eigen::Matrix3d rotation_factor(const Eigen::Matrix3d& m)
+{
+  const double scale = m.norm();
+  if(m.determinant() > 1e-3 * scale * scale * scale) {
+    Eigen::Matrix3d x = m * (std::sqrt(3.) / scale);
+    for(int it = 0; it < 40; ++it) {
+      const Eigen::Matrix3d next = .5 * (x + x.inverse().transpose());
+      const double change = (next - x).squaredNorm();
+      x = next;
+      if(change < 1e-20) return x;
+    }
+  }
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(m, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d u = svd.matrixU();
+  if((u * svd.matrixV().transpose()).determinant() < 0.) u.col(2) *= -1.;   // a degenerate m
+  return u * svd.matrixV().transpose();
+}
+
+// The frame of the axes (columns) of m, as a rotation: the rotation factor of m, its last column
+// negated first if m is left-handed (a frame's axes have no sign). m must not be singular.
+inline Eigen::Matrix3d frame_rotation_of_axes(Eigen::Matrix3d m)
+{
+  if(m.determinant() < 0.) m.col(2) *= -1.;
+  return rotation_factor(m);
+}
+
+// The rotation P among the 24 of the cube that maximizes trace(m P): for m = A^T B with A, B
+// rotations, B P is the representative of B's frame nearest to A. For each permutation of the
+// columns, the signs that match the entries, one flipped (the smallest entry) if the
+// determinant would be -1.
+inline Eigen::Matrix3d best_cube_rotation(const Eigen::Matrix3d& m)
+{
+  static const int permutations[6][3] = { {0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2} };
+  double best = -HUGE_VAL;
+  Eigen::Matrix3d result = Eigen::Matrix3d::Identity();
+  for(int k = 0; k < 6; ++k) {
+    const int* s = permutations[k];
+    // P(s[i], i) = sign_i: trace(m P) = sum_i sign_i m(i, s[i])
+    double value = 0., smallest = HUGE_VAL;
+    int negative = k < 3 ? 0 : 1, weakest = 0;   // odd permutations need an odd number of minus signs
+    std::array<double, 3> sign;
+    for(int i = 0; i < 3; ++i) {
+      const double e = m(i, s[i]);
+      sign[std::size_t(i)] = e < 0. ? -1. : 1.;
+      negative += e < 0. ? 1 : 0;
+      value += std::abs(e);
+      if(std::abs(e) < smallest) { smallest = std::abs(e); weakest = i; }
+    }
+    if(negative % 2 == 1) { sign[std::size_t(weakest)] = -sign[std::size_t(weakest)]; value -= 2. * smallest; }
+    if(value > best) {
+      best = value;
+      result.setZero();
+      for(int i = 0; i < 3; ++i) result(s[i], i) = sign[std::size_t(i)];
+    }
+  }
+  return result;
+}
+
 } // namespace internal
 } // namespace Lattice_mesher_3
 } // namespace CGAL

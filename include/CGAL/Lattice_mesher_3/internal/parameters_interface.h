@@ -52,3 +52,4 @@ CGAL_add_named_parameter(boundary_turn_angle_t, boundary_turn_angle, boundary_tu
 CGAL_add_named_parameter(short_edge_ratio_t, short_edge_ratio, short_edge_ratio)
 CGAL_add_named_parameter(peel_angle_t, peel_angle, peel_angle)
 CGAL_add_named_parameter(sliver_angle_t, sliver_angle, sliver_angle)
+CGAL_add_named_parameter(align_to_features_t, align_to_features, align_to_features)
