@@ -191,6 +191,7 @@ private:
   {
     Tetrahedral_mesh_3<Point_3> mesh;
     const std::vector<Point_3>& points;
+    const std::vector<std::array<int, 4> >& tets;
     std::vector<Matrix_3> frames;
     internal::Point_search_3<GT> search;
     CGAL::Bbox_3 bbox;
@@ -201,7 +202,7 @@ private:
     std::vector<Eigen::Matrix3d> rotations, stretches;
     bool scalar_stretches = true;   // every stretch a multiple of the identity (its (0, 0) entry)
     std::vector<int> vertex_tet;
-    std::vector<std::array<int, 4> > tets, neighbors;
+    std::vector<std::array<int, 4> > neighbors;
     std::vector<Eigen::Matrix3d> inverses;
     // a grid over the box, with a tetrahedron near each cell's centre (-1 where there is none)
     std::array<int, 3> cells = { 0, 0, 0 };
@@ -209,11 +210,10 @@ private:
     std::vector<int> grid;
 
     Data(Tetrahedral_mesh_3<Point_3>&& m, std::vector<Matrix_3>&& f)
-      : mesh(checked(std::move(m), f)), points(mesh.points), frames(std::move(f)), search(points)
+      : mesh(checked(std::move(m), f)), points(mesh.points), tets(mesh.tets), frames(std::move(f)), search(points)
     {
       for(const Point_3& q : points) bbox += q.bbox();
       spacing = median_nearest_distance();
-      tets = mesh.tets;
       if(!tets.empty()) build_interpolation();
     }
 
