@@ -115,12 +115,13 @@ static const char* usage =
   "                   0 keeps the particles as they are)\n"
   "  -o               the mesh, in the format of the extension: .mesh (Medit), .vtu (VTK, with\n"
   "                   theta_min, rho and kappa per tetrahedron), .msh (Gmsh 4.1); several allowed\n"
-  "  --stats          the quality figures as JSON\n"
+  "  --stats          the quality figures as JSON, with the seconds of every stage\n"
   "  --time-limit     stop the particle optimization after the round that ends past S seconds\n"
   "                   (from the start of the meshing) and mesh the particles as they are\n"
   "  --quiet          print only warnings and errors\n"
   "  --verbose        print every optimization round and every stage of the mesh improvement\n"
-  "                   with its time (default: a progress bar on a terminal, the rounds otherwise)\n"
+  "                   with its time, and last the seconds by stage (default: a progress bar on a\n"
+  "                   terminal, the rounds otherwise)\n"
   "  --png            a picture (PNG, 1600x800; needs VTK): the boundary, and the tetrahedra on one\n"
   "                   side of the plane z = the bounding box's centre, coloured by theta_min, those\n"
   "                   below 40 degrees red; without -o, the only output\n";
@@ -236,6 +237,16 @@ static Options parse(int argc, char** argv)
   return o;
 }
 
+// work(), its time added to `stage` of `times`
+template <typename Work>
+static auto timed(LM::Stage_times_visitor& times, const char* stage, Work&& work)
+{
+  const auto start = std::chrono::steady_clock::now();
+  auto result = work();
+  times.add(stage, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  return result;
+}
+
 // The field, and its samples if it is discrete (to check that they cover the domain).
 struct Field_choice
 {
@@ -298,12 +309,13 @@ static Field_choice make_field(const Options& o)
 class Progress
 {
 public:
-  Progress(const Options& o, int levels)
+  Progress(const Options& o, int levels, LM::Stage_times_visitor& times)
     : bar_(!o.quiet && !o.verbose && isatty(fileno(stdout))), lines_(!o.quiet && !bar_), verbose_(o.verbose),
-      levels_(levels), time_limit_(o.time_limit) {}
+      levels_(levels), time_limit_(o.time_limit), times_(times) {}
 
   bool round_done(const LM::Round_report& r)
   {
+    times_.round_done(r);
     if(lines_)
       std::printf("  %-7s level %d round %2d: %8zu particles, energy %12.4f, -%zu +%zu, %3d iterations, %7.2f s\n",
                   r.final_round ? "[final]" : "", r.level, r.round, r.particles, r.energy, r.deleted, r.inserted,
@@ -327,8 +339,9 @@ public:
     return true;
   }
 
-  void stage_done(const char* stage, double seconds) const
+  void stage_done(const char* stage, double seconds)
   {
+    times_.stage_done(stage, seconds);
     if(verbose_) std::printf("  [mesh] %-18s done at %7.2f s\n", stage, seconds);
   }
 
@@ -336,6 +349,7 @@ private:
   bool bar_, lines_, verbose_;
   int levels_;
   double time_limit_;
+  LM::Stage_times_visitor& times_;
 };
 
 // The field scaled by the size that follows the shape, and p's edge length (the largest edge).
@@ -362,11 +376,12 @@ static Field shape_sized_field(const Domain& domain, const Field& field, LM::int
   return Field([sized](const Point_3& x) { return sized.frame(x); });
 }
 
+// Meshes `domain`; `times` holds the stages already run (reading the domain and the field).
 template <typename Domain>
-static int run(const Domain& domain, const Field_choice& given, const Options& o)
+static int run(const Domain& domain, const Field_choice& given, const Options& o, LM::Stage_times_visitor times)
 {
   typedef CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> Mesher;
-  const Field_choice choice = o.field == "cross" ? cross_field(domain, o) : given;
+  const Field_choice choice = o.field == "cross" ? timed(times, "field", [&] { return cross_field(domain, o); }) : given;
   if(choice.samples && o.field != "cross") {
     try { choice.samples->check_coverage(domain.bbox()); }
     catch(const std::invalid_argument& e) { throw std::invalid_argument("--field " + o.field + ": " + e.what()); }
@@ -389,24 +404,26 @@ static int run(const Domain& domain, const Field_choice& given, const Options& o
   p.smoothing_rounds = o.smoothing_rounds;
   p.edge_length = o.edge_length;
   p.number_of_vertices = o.vertices;
-  const Field field = shape_sized_field(domain, choice.field, p, o);
+  const Field field = timed(times, "sizing", [&] { return shape_sized_field(domain, choice.field, p, o); });
   Mesher mesher(domain, field, p);
   if(!o.quiet)
     std::printf("lattice-mesh: %s lattice, l* = %.6g, about %.0f vertices expected, %d coarse level(s), %d thread(s)\n",
                 o.lattice.c_str(), mesher.edge_length(), mesher.expected_vertices(mesher.edge_length()), mesher.coarse_levels(), o.threads);
 
   const auto t0 = std::chrono::steady_clock::now();
-  Progress progress(o, mesher.coarse_levels());
+  Progress progress(o, mesher.coarse_levels(), times);
   mesher.optimize(progress);
   const auto t1 = std::chrono::steady_clock::now();
   const LM::Tetrahedral_mesh_3<Point_3> mesh = mesher.tetrahedralize(progress);
   const auto t2 = std::chrono::steady_clock::now();
 
+  const auto checked = std::chrono::steady_clock::now();
   const LM::Mesh_validity_report validity = LM::check_tetrahedral_mesh(mesh);
   LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, CGAL::parameters::lattice(mesher.lattice()));
   // the local size: the longest edge of the lattice cube there, which the sizing shrinks
   const LM::Boundary_distances_3 distances = LM::boundary_distances(mesh, domain, 0.25 * mesher.edge_length(),
       [&](const Point_3& x) { return mesher.edge_length() * field.frame(x).colwise().norm().maxCoeff(); });
+  times.add("check and quality", std::chrono::duration<double>(std::chrono::steady_clock::now() - checked).count());
   q.hausdorff = distances.hausdorff;
   q.hausdorff_over_size = distances.over_size;
   q.edge_length = mesher.edge_length();
@@ -426,6 +443,7 @@ static int run(const Domain& domain, const Field_choice& given, const Options& o
     if(!os) throw std::runtime_error("cannot write '" + name + "'");
     return os;
   };
+  const auto written = std::chrono::steady_clock::now();
   for(const std::string& out : o.outputs) {
     std::ofstream os = open(out);
     switch(output_format(out)) {
@@ -443,13 +461,19 @@ static int run(const Domain& domain, const Field_choice& given, const Options& o
     }
     }
   }
-  if(!o.stats.empty()) { std::ofstream os = open(o.stats); LM::write_quality_json(os, q); }
   if(!o.png.empty()) {   // drawn by VTK in render_png.cpp
     std::vector<std::array<double, 3> > points;
     for(const Point_3& p : mesh.points) points.push_back({ p.x(), p.y(), p.z() });
     std::vector<double> theta_min;
     for(const LM::Tetrahedron_quality_3& t : tetrahedra_quality()) theta_min.push_back(t.theta_min);
     render_png::write_png(o.png, points, mesh.tets, theta_min);
+  }
+  times.add("output", std::chrono::duration<double>(std::chrono::steady_clock::now() - written).count());
+  q.seconds.stages = times.stages();
+  if(!o.stats.empty()) { std::ofstream os = open(o.stats); LM::write_quality_json(os, q); }
+  if(o.verbose) {
+    std::printf("  seconds by stage (%.2f in all)\n", times.total());
+    for(const auto& s : times.stages()) std::printf("    %-24s %8.3f\n", s.first.c_str(), s.second);
   }
   if(!validity.valid()) {
     std::cerr << "lattice-mesh: error: the output mesh is not valid:\n" << validity.message << "\n";
@@ -467,20 +491,21 @@ int main(int argc, char** argv)
     for(const std::string& f : { o.stats, o.write_field, o.png, o.singularities }) if(!f.empty()) files.push_back(f);
     for(const std::string& f : files)
       if(!std::ofstream(f, std::ios::app)) throw std::runtime_error("cannot write '" + f + "'");
-    const Field_choice field = make_field(o);
+    LM::Stage_times_visitor times;
+    const Field_choice field = timed(times, "field", [&] { return make_field(o); });
     if(!o.input.empty()) {
-      const Surface_domain domain = LM::read_polyhedral_lattice_domain_3<K>(o.input, o.feature_angle);
+      const Surface_domain domain = timed(times, "domain", [&] { return LM::read_polyhedral_lattice_domain_3<K>(o.input, o.feature_angle); });
       for(const std::string& w : domain.warnings()) std::cerr << "lattice-mesh: warning: '" << o.input << "': " << w << "\n";
-      return run(domain, field, o);
+      return run(domain, field, o, times);
     }
     if(o.domain == "cube")
-      return run(Surface_domain(LM::make_cube_surface_3<K>(0.1, 1.1), o.feature_angle), field, o);
+      return run(Surface_domain(LM::make_cube_surface_3<K>(0.1, 1.1), o.feature_angle), field, o, times);
     if(o.domain == "cube11")
-      return run(Surface_domain(LM::make_cube_surface_3<K>(1., 11.), o.feature_angle), field, o);
+      return run(Surface_domain(LM::make_cube_surface_3<K>(1., 11.), o.feature_angle), field, o, times);
     if(o.domain == "sphere")
-      return run(Implicit_domain(LM::Implicit_sphere_3<K>{Point_3(0., 0., 0.), 1.}, CGAL::Bbox_3(-1, -1, -1, 1, 1, 1)), field, o);
+      return run(Implicit_domain(LM::Implicit_sphere_3<K>{Point_3(0., 0., 0.), 1.}, CGAL::Bbox_3(-1, -1, -1, 1, 1, 1)), field, o, times);
     if(o.domain == "torus")
-      return run(Implicit_domain(LM::Implicit_torus_3<K>{1., .4}, CGAL::Bbox_3(-1.4, -.4, -1.4, 1.4, .4, 1.4)), field, o);
+      return run(Implicit_domain(LM::Implicit_torus_3<K>{1., .4}, CGAL::Bbox_3(-1.4, -.4, -1.4, 1.4, .4, 1.4)), field, o, times);
     throw std::invalid_argument("unknown domain '" + o.domain + "' (expected cube, cube11, sphere or torus)");
   } catch(const std::exception& e) {
     std::cerr << "lattice-mesh: error: " << e.what() << "\n" << (argc <= 1 ? usage : "");

@@ -46,6 +46,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -257,12 +258,19 @@ static Run mesh_with_lattice(const Method& m, const Input& in, double requested_
 {
   const Lattice_domain domain(in.surface, feature_angle);
   Run run;
+  LM::Stage_times_visitor times;
   const Tet_mesh mesh = timed(run, [&] {
     return CGAL::lattice_mesh_3(domain, Identity_field(),
                                 CGAL::parameters::number_of_vertices(requested_vertices)
-                                  .lattice(m.lattice).number_of_threads(o.threads).random_seed(o.seed));
+                                  .lattice(m.lattice).number_of_threads(o.threads).random_seed(o.seed).visitor(std::ref(times)));
   });
   run.mesh = make_tetrahedral_mesh(mesh.points, mesh.tets);
+  std::ostringstream details;
+  details << std::setprecision(6) << "\"stages\": {";
+  for(std::size_t i = 0; i < times.stages().size(); ++i)
+    details << (i ? ", " : "") << '"' << times.stages()[i].first << "\": " << times.stages()[i].second;
+  details << '}';
+  run.details = details.str();
   return run;
 }
 

@@ -272,6 +272,31 @@ def speed_ratios(rows_of, models):
     return "\n".join(lines) + "\n"
 
 
+def our_stages(rows_of, models):
+    """Where ours spends the time of its runs (lattice-benchmark's stages, as
+    Lattice_mesher_3::Stage_times_visitor adds them up), or "" when no run has them."""
+    columns = [("insertion", lambda s: s.get("insertion", 0.)),
+               ("L-BFGS, finest level", lambda s: s.get("optimization, level 0", 0.)),
+               ("L-BFGS, coarser levels", lambda s: sum(v for k, v in s.items()
+                                                         if k.startswith("optimization, level ") and k != "optimization, level 0")),
+               ("deletion", lambda s: s.get("deletion", 0.)),
+               ("tetrahedralization", lambda s: s.get("tetrahedralization", 0.)),
+               ("flips", lambda s: s.get("flips", 0.)),
+               ("smoothing", lambda s: s.get("smoothing", 0.)),
+               ("contractions, peeling, labels", lambda s: sum(s.get(k, 0.) for k in ("contractions", "peeling", "labels")))]
+    header = ["model", "method"] + [c for c, _ in columns] + ["sizing and set-up", "time"]
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    for model in models:
+        for method in ("bcc", "fcc"):
+            record = dict(rows_of[model]).get(method)
+            if record is None or "stages" not in record:
+                continue
+            s, total = record["stages"], record["seconds"]["total"]
+            cells = [f"{f(s):.2f}" for _, f in columns] + [f"{total - sum(s.values()):.2f}", f"{total:.2f}"]
+            lines.append("| " + " | ".join([model, method.upper()] + cells) + " |")
+    return "\n".join(lines) + "\n" if len(lines) > 2 else ""
+
+
 def gmsh_stages(rows_of, models):
     """Gmsh's own wall times of its stages in the reported runs (lattice-benchmark's
     gmsh_wall_seconds), or "" when there are none."""
@@ -424,6 +449,11 @@ def main():
     parts += ["## Speed ratios", "",
               "Time of ours divided by the time of a baseline on the same model, from the rows above "
               "(below 1: ours is faster).", "", speed_ratios(rows_of, models)]
+    ours = our_stages(rows_of, models)
+    if ours:
+        parts += ["## Where ours spends its time", "",
+                  "Seconds of each stage of the runs above (the sums over the rounds and repeats); the rest of the "
+                  "meshing call is the sizing and the set-up of the mesher.", "", ours]
     stages = gmsh_stages(rows_of, models)
     if stages:
         parts += ["## Gmsh's stages", "",

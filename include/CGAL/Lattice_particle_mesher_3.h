@@ -25,6 +25,7 @@
 #include <CGAL/Lattice_mesher_3/internal/field_sampling.h>
 #include <CGAL/Lattice_mesher_3/internal/domain_indices.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -34,6 +35,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <vector>
 #include <utility>
 
 namespace CGAL {
@@ -51,6 +53,9 @@ struct Round_report
   int iterations = 0;       ///< number of L-BFGS iterations of the round
   double energy = 0.;       ///< total GHK energy
   double seconds = 0.;      ///< since the optimization started
+  double deletion_seconds = 0.;     ///< seconds this round spent deleting particles
+  double insertion_seconds = 0.;    ///< seconds this round spent inserting particles (at a level's round 0: the start, or the refinement from the coarser level)
+  double optimization_seconds = 0.; ///< seconds of this round's L-BFGS iterations
 };
 
 /// The visitor that does nothing.
@@ -58,6 +63,56 @@ struct Null_lattice_mesher_visitor
 {
   /// does nothing
   void round_done(const Round_report&) {}
+};
+
+/// A visitor that adds up the time of each stage (a model of `LatticeMesherVisitor_3`): the
+/// L-BFGS iterations per coarse-to-fine level (`"optimization, level k"`), the insertions
+/// (`"insertion"`, with the start and the refinements) and the deletions (`"deletion"`) of every
+/// round, then each stage of the mesh improvement under its own name (flips, smoothing and
+/// contractions summed over their repeats). Callers add stages of their own with `add()` (reading
+/// the domain, writing the mesh), so that one table holds the whole run.
+class Stage_times_visitor
+{
+public:
+  /// the stages in the order they first ran, with their total seconds
+  const std::vector<std::pair<std::string, double> >& stages() const { return stages_; }
+
+  /// adds `seconds` to `stage`, a new stage at the end if there is none of that name yet
+  void add(const std::string& stage, double seconds)
+  {
+    auto it = std::find_if(stages_.begin(), stages_.end(), [&](const std::pair<std::string, double>& s) { return s.first == stage; });
+    if(it == stages_.end()) stages_.emplace_back(stage, seconds);
+    else it->second += seconds;
+  }
+
+  /// the sum over the stages
+  double total() const
+  {
+    double t = 0.;
+    for(const auto& s : stages_) t += s.second;
+    return t;
+  }
+
+  /// adds the round's deletion, insertion and optimization times
+  void round_done(const Round_report& r)
+  {
+    add("insertion", r.insertion_seconds);
+    add("optimization, level " + std::to_string(r.level), r.optimization_seconds);
+    add("deletion", r.deletion_seconds);
+    mesh_seconds_ = 0.;
+  }
+
+  /// adds the time since the previous stage of the mesh improvement
+  void stage_done(const char* stage, double seconds)
+  {
+    if(seconds < mesh_seconds_) mesh_seconds_ = 0.;   // another tetrahedralization
+    add(stage, seconds - mesh_seconds_);
+    mesh_seconds_ = seconds;
+  }
+
+private:
+  std::vector<std::pair<std::string, double> > stages_;
+  double mesh_seconds_ = 0.;   // the mesh improvement's clock at its last stage
 };
 
 namespace internal {
@@ -239,31 +294,46 @@ public:
       return inserted + Lattice_mesher_3::internal::insert_feature_particles(particles_, domain_, field_, lattice_, o);
     };
 
+    // what the next report counts: the time of each part of the round
+    double deletion = 0., insertion = 0., optimization = 0.;
+    auto timed = [&](double& total, auto&& work) {
+      const auto t = std::chrono::steady_clock::now();
+      const auto result = work();
+      total += std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+      return result;
+    };
+    auto report = [&](int level, int round, const Optimization_result& r, std::size_t del, std::size_t ins, bool final_round) {
+      Round_report rep;
+      rep.level = level; rep.round = round; rep.final_round = final_round;
+      rep.particles = particles_.size(); rep.deleted = del; rep.inserted = ins;
+      rep.iterations = r.iterations; rep.energy = r.energy; rep.seconds = seconds();
+      rep.deletion_seconds = deletion; rep.insertion_seconds = insertion; rep.optimization_seconds = optimization;
+      deletion = insertion = optimization = 0.;
+      return Lattice_mesher_3::internal::continue_after(visitor, rep);
+    };
+    auto optimize_round = [&](const Lattice_mesher_3::internal::Optimization_options& o) {
+      return timed(optimization, [&] { return Lattice_mesher_3::internal::optimize_particles_round(particles_, domain_, field_, lattice_, o); });
+    };
+
     for(int level = levels; level >= 0; --level) {
       Lattice_mesher_3::internal::Optimization_options o = options(std::ldexp(p_.edge_length, level));
-      if(level == levels) {
+      timed(insertion, [&] {
+        if(level < levels) return Lattice_mesher_3::internal::insert_particles(particles_, domain_, field_, lattice_, o);   // refinement
         if(sc.grow) initialize_particles(o.edge_length);
         else scatter_particles(o.edge_length);
-      }
-      else Lattice_mesher_3::internal::insert_particles(particles_, domain_, field_, lattice_, o);   // refinement
-      auto report = [&](int round, const Optimization_result& r, std::size_t del, std::size_t ins, bool final_round) {
-        Round_report rep;
-        rep.level = level; rep.round = round; rep.final_round = final_round;
-        rep.particles = particles_.size(); rep.deleted = del; rep.inserted = ins;
-        rep.iterations = r.iterations; rep.energy = r.energy; rep.seconds = seconds();
-        return Lattice_mesher_3::internal::continue_after(visitor, rep);
-      };
+        return std::size_t(0);
+      });
       o.max_iterations = sc.early_iterations;
-      Optimization_result r = Lattice_mesher_3::internal::optimize_particles_round(particles_, domain_, field_, lattice_, o);
-      if(!report(0, r, 0, 0, false)) return;
+      Optimization_result r = optimize_round(o);
+      if(!report(level, 0, r, 0, 0, false)) return;
       for(int round = 1; round <= max_rounds; ++round) {
-        const std::size_t del = remove(o);
-        const std::size_t ins = insert(o);
+        const std::size_t del = timed(deletion, [&] { return remove(o); });
+        const std::size_t ins = timed(insertion, [&] { return insert(o); });
         if(sc.grow && del + ins == 0) break;
         o.max_iterations = round < 5 ? sc.early_iterations : sc.late_iterations;
         const double previous = r.energy;
-        r = Lattice_mesher_3::internal::optimize_particles_round(particles_, domain_, field_, lattice_, o);
-        if(!report(round, r, del, ins, false)) return;
+        r = optimize_round(o);
+        if(!report(level, round, r, del, ins, false)) return;
         // Near a boundary that cuts the lattice obliquely, a few particles may be deleted and
         // re-inserted forever; once a round no longer lowers the energy, more rounds only churn.
         if(sc.grow && round >= 4 && r.energy > previous - 1e-4 * std::abs(previous)) break;
@@ -274,17 +344,12 @@ public:
     // tetrahedra below 40 degrees). A last deletion, insertion into the holes it leaves, and
     // deletion of what still does not fit close the loop.
     Lattice_mesher_3::internal::Optimization_options o = options(p_.edge_length);
-    std::size_t deleted = remove(o);
-    const std::size_t inserted = insert(o);
-    deleted += remove(o);
+    std::size_t deleted = timed(deletion, [&] { return remove(o); });
+    const std::size_t inserted = timed(insertion, [&] { return insert(o); });
+    deleted += timed(deletion, [&] { return remove(o); });
     o.max_iterations = sc.final_iterations;
     o.gradient_tolerance = p_.final_gradient_tolerance;
-    const Optimization_result r = Lattice_mesher_3::internal::optimize_particles_round(particles_, domain_, field_, lattice_, o);
-    Round_report rep;
-    rep.final_round = true; rep.particles = particles_.size(); rep.deleted = deleted; rep.inserted = inserted;
-    rep.iterations = r.iterations;
-    rep.energy = r.energy; rep.seconds = seconds();
-    Lattice_mesher_3::internal::continue_after(visitor, rep);
+    report(0, 0, optimize_round(o), deleted, inserted, true);
   }
 
   /// runs `optimize(visitor)` with a `Null_lattice_mesher_visitor`
@@ -424,6 +489,7 @@ public:
     stage("peeling");
     Lattice_mesher_3::internal::label_mesh(
         mesh, Lattice_mesher_3::internal::Lattice_domain_indices<Lattice_mesher_3::internal::Int_indices, MeshDomain>{ domain_ });
+    stage("labels");
     return mesh;
   }
 

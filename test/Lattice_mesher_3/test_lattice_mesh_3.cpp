@@ -21,6 +21,7 @@
 
 #include "test_helpers.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -440,11 +441,37 @@ TEST(Lattice_mesh_3, VisitorStopsTheOptimization)
   EXPECT_EQ(visitor.rounds, 1);
   ASSERT_FALSE(visitor.stages.empty());
   EXPECT_EQ(visitor.stages.front(), "tetrahedralization");
-  EXPECT_EQ(visitor.stages.back(), "peeling");
+  EXPECT_EQ(visitor.stages.back(), "labels");
   EXPECT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
   // stopped at the coarse level: about an eighth of the vertices
   const std::size_t full = CGAL::lattice_mesh_3(cube(), field, CGAL::parameters::edge_length(0.125).coarse_levels(1)).points.size();
   EXPECT_LT(mesh.points.size(), full / 3);
+}
+
+// Stage_times_visitor adds up each stage once: the insertions, the L-BFGS iterations of each
+// level, the deletions, then the stages of the mesh improvement, none negative and together no
+// longer than the call.
+TEST(Lattice_mesh_3, StageTimesAddUpTheRun)
+{
+  LM::Stage_times_visitor times;
+  const auto start = std::chrono::steady_clock::now();
+  const LM::Tetrahedral_mesh_3<Point_3> mesh =
+      CGAL::lattice_mesh_3(cube(), Field(), CGAL::parameters::edge_length(0.125).coarse_levels(1).visitor(std::ref(times)));
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
+  std::vector<std::string> names;
+  for(const auto& s : times.stages()) {
+    names.push_back(s.first);
+    EXPECT_GE(s.second, 0.) << s.first;
+  }
+  const std::vector<std::string> expected = { "insertion", "optimization, level 1", "deletion", "optimization, level 0",
+                                              "tetrahedralization", "flips", "smoothing", "contractions", "peeling", "labels" };
+  EXPECT_EQ(names, expected);
+  EXPECT_GT(times.total(), 0.);
+  EXPECT_LE(times.total(), wall);
+  times.add("output", 1.5);
+  times.add("output", 1.);
+  EXPECT_EQ(times.stages().back(), std::make_pair(std::string("output"), 2.5));
 }
 
 // The mesh carries the domain's labels: the cube's six faces are six surface patches, each

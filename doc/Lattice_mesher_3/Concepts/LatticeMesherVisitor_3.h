@@ -17,6 +17,7 @@ optimization at a time limit (the mesh is then made of the particles as they are
 is copied into the parameter pack) or as `std::ref(v)` to keep its state in `v`.
 
 \cgalHasModel `CGAL::Lattice_mesher_3::Null_lattice_mesher_visitor`
+\cgalHasModel `CGAL::Lattice_mesher_3::Stage_times_visitor`
 
 \sa `CGAL::Lattice_mesher_3::Round_report`
 */
@@ -31,7 +32,8 @@ public:
   (0 is the final edge length), its index `round` within the level, whether it was the closing
   round (`final_round`, reported last), the number of particles, the numbers deleted and inserted
   before the round, the L-BFGS iterations, the total Gaussian Hole Kernel energy at the end of the
-  round, and the seconds elapsed since the optimization started. Returns `false` to stop the
+  round, the seconds elapsed since the optimization started, and the seconds the round spent
+  deleting, inserting and in L-BFGS. Returns `false` to stop the
   optimization after this round (no further round, level or closing round); a model may return
   `void` instead, which goes on.
   */
@@ -39,7 +41,7 @@ public:
 
   /*!
   optional: called after each stage of `CGAL::Lattice_particle_mesher_3::tetrahedralize()`
-  (`"tetrahedralization"`, `"flips"`, `"smoothing"`, `"contractions"`, `"peeling"`; flips,
+  (`"tetrahedralization"`, `"flips"`, `"smoothing"`, `"contractions"`, `"peeling"`, `"labels"`; flips,
   smoothing and contractions may come several times) with the seconds since the
   tetrahedralization started.
   */

@@ -33,6 +33,7 @@
 #include <ostream>
 #include <stdexcept>
 #include <tuple>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -90,7 +91,8 @@ struct Mesh_quality_3
     double optimize = 0.;
     double mesh = 0.;
     double total = 0.;
-  } seconds;  ///< running times in seconds of the particle optimization (`optimize`), the tetrahedralization and its improvement (`mesh`) and the whole run (`total`); filled by the caller, 0 otherwise
+    std::vector<std::pair<std::string, double> > stages;
+  } seconds;  ///< running times in seconds of the particle optimization (`optimize`), the tetrahedralization and its improvement (`mesh`), the whole run (`total`) and each stage in the order they ran (`stages`, see `Stage_times_visitor`); filled by the caller, 0 and empty otherwise
 };
 
 namespace internal {
@@ -574,7 +576,8 @@ inline void print_quality_table(std::ostream& os, const Mesh_quality_3& q)
 Writes `q` as a JSON object with the keys `vertices`, `tets`, `theta_min` {`min`, `mean`, `std`},
 `theta_max` {`max`, `mean`, `std`}, `rho` and `kappa` {`min`, `mean`, `std`}, `epsilon`
 {`mean`, `std`}, `below20`, `below40`, `hausdorff` and `hausdorff_over_size` (-1 when not measured), `edge_length` and `seconds`
-{`optimize`, `mesh`, `total`}. Numbers have 10 significant digits.
+{`optimize`, `mesh`, `total`, and `stages` {name: seconds, in the order they ran} when there are
+any}. Numbers have 10 significant digits.
 */
 inline void write_quality_json(std::ostream& os, const Mesh_quality_3& q)
 {
@@ -600,7 +603,14 @@ inline void write_quality_json(std::ostream& os, const Mesh_quality_3& q)
      << "  \"hausdorff_over_size\": " << q.hausdorff_over_size << ",\n"
      << "  \"edge_length\": " << q.edge_length << ",\n"
      << "  \"seconds\": {\"optimize\": " << q.seconds.optimize << ", \"mesh\": " << q.seconds.mesh
-     << ", \"total\": " << q.seconds.total << "}\n"
+     << ", \"total\": " << q.seconds.total;
+  if(!q.seconds.stages.empty()) {
+    os << ", \"stages\": {";
+    for(std::size_t i = 0; i < q.seconds.stages.size(); ++i)
+      os << (i ? ", " : "") << '"' << q.seconds.stages[i].first << "\": " << q.seconds.stages[i].second;
+    os << '}';
+  }
+  os << "}\n"
      << "}\n";
   os.flags(flags);
   os.precision(precision);
