@@ -241,9 +241,9 @@ static Options parse(int argc, char** argv)
 template <typename Work>
 static auto timed(LM::Stage_times_visitor& times, const char* stage, Work&& work)
 {
-  const auto start = std::chrono::steady_clock::now();
-  auto result = work();
-  times.add(stage, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  double seconds = 0.;
+  auto result = LM::internal::timed(seconds, work);
+  times.add(stage, seconds);
   return result;
 }
 
@@ -260,13 +260,15 @@ static Field_choice analytic(const AnalyticField& f)
 
 // The cross field of the domain, with its figures; its singular edges to --singularities.
 template <typename Domain>
-static Field_choice cross_field(const Domain& domain, const Options& o)
+static Field_choice cross_field(const Domain& domain, const Options& o, LM::Stage_times_visitor& times)
 {
-  const auto start = std::chrono::steady_clock::now();
-  const auto field = std::make_shared<const Discrete_field>(LM::compute_cross_field_3(domain,
-      CGAL::parameters::number_of_vertices(o.field_vertices).random_seed(o.seed).number_of_threads(o.threads)));
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const LM::Frame_field_diagnostics d = LM::compute_frame_field_diagnostics(*field);
+  double seconds = 0.;
+  const auto field = LM::internal::timed(seconds, [&] {
+    return std::make_shared<const Discrete_field>(LM::compute_cross_field_3(domain,
+        CGAL::parameters::number_of_vertices(o.field_vertices).random_seed(o.seed).number_of_threads(o.threads)));
+  });
+  times.add("field", seconds);
+  const LM::Frame_field_diagnostics d = timed(times, "field", [&] { return LM::compute_frame_field_diagnostics(*field); });
   if(!o.quiet)
     std::printf("lattice-mesh: cross field: %zu vertices, %zu tetrahedra, %.2f s; smoothness energy %.6g; boundary alignment "
                 "%.3f degrees mean, %.3f max; %zu singular edges\n", field->number_of_samples(), field->mesh().tets.size(), seconds,
@@ -354,7 +356,8 @@ private:
 
 // The field scaled by the size that follows the shape, and p's edge length (the largest edge).
 template <typename Domain>
-static Field shape_sized_field(const Domain& domain, const Field& field, LM::internal::Lattice_mesher_parameters& p, const Options& o)
+static Field shape_sized_field(const Domain& domain, const Field& field, LM::internal::Lattice_mesher_parameters& p, const Options& o,
+                               LM::Stage_times_visitor& times)
 {
   const auto start = std::chrono::steady_clock::now();
   const LM::internal::Shape_sizing_parameters s = shape_sizing(o);
@@ -369,10 +372,11 @@ static Field shape_sized_field(const Domain& domain, const Field& field, LM::int
     user = given;
   }
   const auto sized = LM::internal::sized_field<Traits>(domain, field, user, p, s, &report);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  times.add("sizing", seconds);
   if(!o.quiet && (o.cells_across > 0. || report.surface_tolerance > 0.))
     std::printf("lattice-mesh: shape sizing: %zu samples (%.3g cells across, surface tolerance %.4g) at l* %.4g, smallest size %.4g, %.2f s\n",
-                report.samples, report.cells_across, report.surface_tolerance, p.edge_length, report.smallest_size,
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+                report.samples, report.cells_across, report.surface_tolerance, p.edge_length, report.smallest_size, seconds);
   return Field([sized](const Point_3& x) { return sized.frame(x); });
 }
 
@@ -381,7 +385,7 @@ template <typename Domain>
 static int run(const Domain& domain, const Field_choice& given, const Options& o, LM::Stage_times_visitor times)
 {
   typedef CGAL::Lattice_particle_mesher_3<Traits, Domain, Field> Mesher;
-  const Field_choice choice = o.field == "cross" ? timed(times, "field", [&] { return cross_field(domain, o); }) : given;
+  const Field_choice choice = o.field == "cross" ? cross_field(domain, o, times) : given;
   if(choice.samples && o.field != "cross") {
     try { choice.samples->check_coverage(domain.bbox()); }
     catch(const std::invalid_argument& e) { throw std::invalid_argument("--field " + o.field + ": " + e.what()); }
@@ -404,7 +408,7 @@ static int run(const Domain& domain, const Field_choice& given, const Options& o
   p.smoothing_rounds = o.smoothing_rounds;
   p.edge_length = o.edge_length;
   p.number_of_vertices = o.vertices;
-  const Field field = timed(times, "sizing", [&] { return shape_sized_field(domain, choice.field, p, o); });
+  const Field field = shape_sized_field(domain, choice.field, p, o, times);
   Mesher mesher(domain, field, p);
   if(!o.quiet)
     std::printf("lattice-mesh: %s lattice, l* = %.6g, about %.0f vertices expected, %d coarse level(s), %d thread(s)\n",

@@ -189,6 +189,7 @@ struct Run
   double seconds = 0.;       // wall time of the meshing call
   double peak_rss_mb = 0.;   // of the process, when the meshing call returned
   std::string details;       // more JSON keys ("key": value, ...), or empty
+  std::vector<std::pair<std::string, double> > stages;   // ours: where the time went
 };
 
 static double peak_rss_mb()
@@ -265,12 +266,7 @@ static Run mesh_with_lattice(const Method& m, const Input& in, double requested_
                                   .lattice(m.lattice).number_of_threads(o.threads).random_seed(o.seed).visitor(std::ref(times)));
   });
   run.mesh = make_tetrahedral_mesh(mesh.points, mesh.tets);
-  std::ostringstream details;
-  details << std::setprecision(6) << "\"stages\": {";
-  for(std::size_t i = 0; i < times.stages().size(); ++i)
-    details << (i ? ", " : "") << '"' << times.stages()[i].first << "\": " << times.stages()[i].second;
-  details << '}';
-  run.details = details.str();
+  run.stages = times.stages();
   return run;
 }
 
@@ -622,6 +618,7 @@ static void report(const Method& m, const Input& in, const Run& run, const std::
   const LM::Mesh_validity_report validity = LM::check_tetrahedral_mesh(run.mesh);
   LM::Mesh_quality_3 q = LM::compute_mesh_quality(run.mesh, field, CGAL::parameters::lattice(lattice));
   q.seconds.total = run.seconds;
+  q.seconds.stages = run.stages;
 
   std::cout << "lattice-benchmark: " << m.name << " on " << in.name << ": " << run.mesh.points.size()
             << " vertices (target " << o.vertices << "), " << run.seconds << " s (final run only), peak RSS "

@@ -289,9 +289,9 @@ def our_stages(rows_of, models):
     for model in models:
         for method in ("bcc", "fcc"):
             record = dict(rows_of[model]).get(method)
-            if record is None or "stages" not in record:
+            if record is None or "stages" not in record["seconds"]:
                 continue
-            s, total = record["stages"], record["seconds"]["total"]
+            s, total = record["seconds"]["stages"], record["seconds"]["total"]
             cells = [f"{f(s):.2f}" for _, f in columns] + [f"{total - sum(s.values()):.2f}", f"{total:.2f}"]
             lines.append("| " + " | ".join([model, method.upper()] + cells) + " |")
     return "\n".join(lines) + "\n" if len(lines) > 2 else ""

@@ -117,6 +117,16 @@ private:
 
 namespace internal {
 
+// work(), its duration in seconds added to `seconds`
+template <typename Work>
+auto timed(double& seconds, Work&& work)
+{
+  const auto start = std::chrono::steady_clock::now();
+  auto result = work();
+  seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
 // A visitor's round_done() returns void (go on) or bool (false: stop the optimization).
 template <typename Visitor>
 bool continue_after(Visitor& visitor, const Round_report& report)
@@ -296,12 +306,7 @@ public:
 
     // what the next report counts: the time of each part of the round
     double deletion = 0., insertion = 0., optimization = 0.;
-    auto timed = [&](double& total, auto&& work) {
-      const auto t = std::chrono::steady_clock::now();
-      const auto result = work();
-      total += std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-      return result;
-    };
+    using Lattice_mesher_3::internal::timed;
     auto report = [&](int level, int round, const Optimization_result& r, std::size_t del, std::size_t ins, bool final_round) {
       Round_report rep;
       rep.level = level; rep.round = round; rep.final_round = final_round;

@@ -113,13 +113,18 @@ Weighted_edges weighted_edges(const Tetrahedral_mesh_3<Point_3>& mesh)
 }
 
 // The smoothness energy 1/2 sum_ij w_ij |q_i - q_j|^2 of the frames (rotations) at the vertices.
+inline double frame_field_energy(const Weighted_edges& edges, const std::vector<Sh9>& q)
+{
+  double e = 0.;
+  for(const auto& edge : edges) e += .5 * edge.second * (q[std::size_t(edge.first.first)] - q[std::size_t(edge.first.second)]).squaredNorm();
+  return e;
+}
+
 inline double frame_field_energy(const Weighted_edges& edges, const std::vector<Eigen::Matrix3d>& rotations)
 {
   std::vector<Sh9> q(rotations.size());
   for(std::size_t v = 0; v < rotations.size(); ++v) q[v] = frame_coefficients(rotations[v]);
-  double e = 0.;
-  for(const auto& edge : edges) e += .5 * edge.second * (q[std::size_t(edge.first.first)] - q[std::size_t(edge.first.second)]).squaredNorm();
-  return e;
+  return frame_field_energy(edges, q);
 }
 
 // The frame field of a mesh: per vertex a rotation whose columns are the frame's axes, and the
@@ -214,7 +219,7 @@ private:
         if(candidate.dot(a) > q[v].dot(a)) { q[v] = candidate; result.rotations[v] = r; }
       }
       const double previous = result.energies.back();
-      result.energies.push_back(energy(result.rotations));
+      result.energies.push_back(frame_field_energy(edges_, q));
       if(previous - result.energies.back() < 1e-5 * previous) break;
     }
   }
