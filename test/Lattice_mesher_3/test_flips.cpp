@@ -323,12 +323,19 @@ TEST(Peel_boundary_slivers, RemovesFlatBoundarySliversOnly)
   EXPECT_EQ(flat.tets.size(), 2u);
   EXPECT_GT(worst_angle(flat, field), 20.);
 
-  // p3 raised by 0.25: the capping tetrahedron is poor (13.6 degrees) but not flat (its height
-  // 0.2 of its mean edge), and stays
+  // p3 raised by 0.25: the capping tetrahedron is poor (13.6 degrees), its height 0.2 of its mean
+  // edge: it stays for flatness_ratio(0.1), and goes at the default 0.4
   LM::Tetrahedral_mesh_3<Point_3> tall = capped_pyramid(.25);
   ASSERT_LT(worst_angle(tall, field), 20.);
-  EXPECT_EQ(LM::peel_boundary_slivers(tall, field), 0u);
+  EXPECT_EQ(LM::peel_boundary_slivers(tall, field, CGAL::parameters::flatness_ratio(.1)), 0u);
   EXPECT_EQ(tall.tets.size(), 3u);
+  EXPECT_EQ(LM::peel_boundary_slivers(tall, field), 1u);
+  EXPECT_TRUE(LM::check_tetrahedral_mesh(tall).valid()) << LM::check_tetrahedral_mesh(tall).message;
+  EXPECT_EQ(tall.tets.size(), 2u);
+  // p3 raised by 0.7: 29.8 degrees, above the peeling angle, and the tetrahedron stays
+  LM::Tetrahedral_mesh_3<Point_3> good = capped_pyramid(.7);
+  ASSERT_GT(worst_angle(good, field), 20.);
+  EXPECT_EQ(LM::peel_boundary_slivers(good, field), 0u);
 
   // the sliver on one tetrahedron under half of it (three faces on the boundary): its removal
   // leaves p3 in no tetrahedron, and p3 goes

@@ -12,6 +12,7 @@
 
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/make_lattice_domain_3.h>
+#include <CGAL/Lattice_mesher_3/mesh_quality.h>
 #include <CGAL/Lattice_mesher_3/internal/domain_indices.h>
 
 #include <CGAL/Labeled_mesh_domain_3.h>
@@ -142,15 +143,8 @@ void convert_to_c3t3(const Tetrahedral_mesh_3<Point_3>& mesh, const LatticeDomai
   auto flat_on_surface = [&](const std::array<int, 4>& t) {
     if(mesh.vertex_kinds.size() != mesh.points.size()) return false;
     for(int v : t) if(mesh.vertex_kinds[v] == Particle_kind::FREE) return false;
-    const Point_3* p[4] = { &mesh.points[t[0]], &mesh.points[t[1]], &mesh.points[t[2]], &mesh.points[t[3]] };
-    double edges = 0., largest_face = 0.;
-    for(int i = 0; i < 4; ++i) {
-      for(int j = i + 1; j < 4; ++j) edges += std::sqrt(CGAL::to_double(CGAL::squared_distance(*p[i], *p[j])));
-      largest_face = (std::max)(largest_face, std::sqrt(CGAL::to_double(
-        CGAL::squared_area(*p[(i + 1) % 4], *p[(i + 2) % 4], *p[(i + 3) % 4]))));
-    }
-    const double volume = std::abs(CGAL::to_double(CGAL::volume(*p[0], *p[1], *p[2], *p[3])));
-    return 3. * volume < .1 * (edges / 6.) * largest_face;
+    return internal::height_over_mean_edge(to_eigen(mesh.points[t[0]]), to_eigen(mesh.points[t[1]]),
+                                           to_eigen(mesh.points[t[2]]), to_eigen(mesh.points[t[3]])) < .1;
   };
   std::set<std::array<int, 4> > tets;
   for(std::array<int, 4> t : mesh.tets) { std::sort(t.begin(), t.end()); tets.insert(t); }

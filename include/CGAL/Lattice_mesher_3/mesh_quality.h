@@ -229,6 +229,22 @@ inline double shortest_squared_edge(const Eigen::Vector3d& a, const Eigen::Vecto
                       (d - b).squaredNorm(), (d - c).squaredNorm() });
 }
 
+// The smallest height of the tetrahedron (a, b, c, d) (three times its volume over its largest
+// face) over its mean edge: 0.816 for the regular one, 0 for a flat one. Removing a tetrahedron
+// with two faces on the boundary moves the boundary by that height.
+inline double height_over_mean_edge(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                                    const Eigen::Vector3d& d)
+{
+  const std::array<Eigen::Vector3d, 4> p{ a, b, c, d };
+  double mean_edge = 0., largest_face = 0.;
+  for(int i = 0; i < 4; ++i) for(int j = i + 1; j < 4; ++j) mean_edge += (p[i] - p[j]).norm();
+  mean_edge /= 6.;
+  for(int i = 0; i < 4; ++i)
+    largest_face = (std::max)(largest_face, .5 * (p[(i + 2) % 4] - p[(i + 1) % 4]).cross(p[(i + 3) % 4] - p[(i + 1) % 4]).norm());
+  const double volume = std::abs((b - a).cross(c - a).dot(d - a)) / 6.;
+  return mean_edge > 0. && largest_face > 0. ? 3. * volume / (mean_edge * largest_face) : 0.;
+}
+
 } // namespace internal
 
 /*!
