@@ -73,7 +73,9 @@ static const char* usage =
   "                   torus (axis y, radii 1 and 0.4)\n"
   "  --lattice        bcc (default), fcc, or gaussian (hole-less kernel of Particle2013)\n"
   "  --edge-length    lattice cube edge l* in the isotropic space of the field\n"
-  "  --vertices       pick l* so that the mesh has about N vertices\n"
+  "  --vertices       pick l* so that the mesh has about N vertices; a mesh more than 15% off N\n"
+  "                   (thin parts lost, a box of whole lattice layers) is made again for\n"
+  "                   N sqrt(N/M) (M its count), and the one closer to N is written\n"
   "  --field          identity (default); rotation-y (the paper's torus field Ry); fig8, fig9 (the\n"
   "                   paper's Fig. 8 and 9 fields, for the domains cube and cube11); cross (a\n"
   "                   smooth cross field of the domain, aligned with its boundary, feature curves\n"
@@ -117,7 +119,8 @@ static const char* usage =
   "                   theta_min, rho and kappa per tetrahedron), .msh (Gmsh 4.1); several allowed\n"
   "  --stats          the quality figures as JSON, with the seconds of every stage\n"
   "  --time-limit     stop the particle optimization after the round that ends past S seconds\n"
-  "                   (from the start of the meshing) and mesh the particles as they are\n"
+  "                   (from the start of the meshing) and mesh the particles as they are (and\n"
+  "                   do not mesh again for a missed --vertices)\n"
   "  --quiet          print only warnings and errors\n"
   "  --verbose        print every optimization round and every stage of the mesh improvement\n"
   "                   with its time, and last the seconds by stage (default: a progress bar on a\n"
@@ -408,31 +411,46 @@ static int run(const Domain& domain, const Field_choice& given, const Options& o
   p.smoothing_rounds = o.smoothing_rounds;
   p.edge_length = o.edge_length;
   p.number_of_vertices = o.vertices;
-  const Field field = shape_sized_field(domain, choice.field, p, o, times);
-  Mesher mesher(domain, field, p);
-  if(!o.quiet)
-    std::printf("lattice-mesh: %s lattice, l* = %.6g, about %.0f vertices expected, %d coarse level(s), %d thread(s)\n",
-                o.lattice.c_str(), mesher.edge_length(), mesher.expected_vertices(mesher.edge_length()), mesher.coarse_levels(), o.threads);
-
-  const auto t0 = std::chrono::steady_clock::now();
-  Progress progress(o, mesher.coarse_levels(), times);
-  mesher.optimize(progress);
-  const auto t1 = std::chrono::steady_clock::now();
-  const LM::Tetrahedral_mesh_3<Point_3> mesh = mesher.tetrahedralize(progress);
-  const auto t2 = std::chrono::steady_clock::now();
+  // one run for a count (0: the edge length given), and the runs' seconds
+  struct Meshed { LM::Tetrahedral_mesh_3<Point_3> mesh; Field field; double edge_length; LM::Lattice_3 lattice; };
+  double optimize_seconds = 0., mesh_seconds = 0.;
+  auto mesh_for = [&](double count) {
+    LM::internal::Lattice_mesher_parameters q = p;
+    q.number_of_vertices = count;
+    if(!o.quiet && count != p.number_of_vertices)
+      std::printf("lattice-mesh: the mesh is more than 15%% off %.0f vertices: meshing again for about %.0f\n", p.number_of_vertices, count);
+    const Field field = shape_sized_field(domain, choice.field, q, o, times);
+    Mesher mesher(domain, field, q);
+    if(!o.quiet)
+      std::printf("lattice-mesh: %s lattice, l* = %.6g, about %.0f vertices expected, %d coarse level(s), %d thread(s)\n",
+                  o.lattice.c_str(), mesher.edge_length(), mesher.expected_vertices(mesher.edge_length()), mesher.coarse_levels(), o.threads);
+    const auto t0 = std::chrono::steady_clock::now();
+    Progress progress(o, mesher.coarse_levels(), times);
+    mesher.optimize(progress);
+    const auto t1 = std::chrono::steady_clock::now();
+    Meshed result{ mesher.tetrahedralize(progress), field, mesher.edge_length(), mesher.lattice() };
+    optimize_seconds += std::chrono::duration<double>(t1 - t0).count();
+    mesh_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+    return result;
+  };
+  // a time limit is for one run
+  const Meshed meshed = o.time_limit > 0. ? mesh_for(p.number_of_vertices)
+                      : LM::internal::run_for_vertex_count(p.number_of_vertices, mesh_for, [](const Meshed& m) { return m.mesh.points.size(); });
+  const LM::Tetrahedral_mesh_3<Point_3>& mesh = meshed.mesh;
+  const Field& field = meshed.field;
 
   const auto checked = std::chrono::steady_clock::now();
   const LM::Mesh_validity_report validity = LM::check_tetrahedral_mesh(mesh);
-  LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, CGAL::parameters::lattice(mesher.lattice()));
+  LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, CGAL::parameters::lattice(meshed.lattice));
   // the local size: the longest edge of the lattice cube there, which the sizing shrinks
-  const LM::Boundary_distances_3 distances = LM::boundary_distances(mesh, domain, 0.25 * mesher.edge_length(),
-      [&](const Point_3& x) { return mesher.edge_length() * field.frame(x).colwise().norm().maxCoeff(); });
+  const LM::Boundary_distances_3 distances = LM::boundary_distances(mesh, domain, 0.25 * meshed.edge_length,
+      [&](const Point_3& x) { return meshed.edge_length * field.frame(x).colwise().norm().maxCoeff(); });
   times.add("check and quality", std::chrono::duration<double>(std::chrono::steady_clock::now() - checked).count());
   q.hausdorff = distances.hausdorff;
   q.hausdorff_over_size = distances.over_size;
-  q.edge_length = mesher.edge_length();
-  q.seconds.optimize = std::chrono::duration<double>(t1 - t0).count();
-  q.seconds.mesh = std::chrono::duration<double>(t2 - t1).count();
+  q.edge_length = meshed.edge_length;
+  q.seconds.optimize = optimize_seconds;
+  q.seconds.mesh = mesh_seconds;
   q.seconds.total = q.seconds.optimize + q.seconds.mesh;
   if(!o.quiet) LM::print_quality_table(std::cout, q);
 

@@ -46,6 +46,25 @@ run_lattice_mesher(const MeshDomain& domain, const FrameField& field, const inte
   return mesher.tetrahedralize(visitor);
 }
 
+// The answer to number_of_vertices(n): `run(count)` meshes for a count (0: the edge length as
+// given) and `vertices(result)` counts the mesh's vertices. The count model holds for a lattice
+// that fills the domain; where it cannot (parts thinner than the smallest size, whose flat cells
+// go; a box that takes a whole number of layers), a mesh of m vertices falls short of n. If m is
+// off n by more than 15 %, the mesh is made again for n sqrt(n / m) (between n / 2 and 2 n), and
+// the one closer to n is kept. Half the correction, in logarithm: the finer lattice resolves
+// more of the thin parts, and n^2 / m overshoots (3,000 asked: boeing 1,367 vertices, for 6,584
+// 5,111, for 4,443 3,115; cheese 1,315, 5,803, 3,331).
+template <typename Run, typename Vertices>
+auto run_for_vertex_count(double n, Run run, Vertices vertices) -> decltype(run(n))
+{
+  auto result = run(n);
+  const double m = double(vertices(result));
+  if(!(n > 0.) || !(m > 0.) || std::abs(m - n) <= .15 * n) return result;
+  auto again = run(n * (std::min)(2., (std::max)(.5, std::sqrt(n / m))));
+  if(std::abs(double(vertices(again)) - n) < std::abs(m - n)) return again;
+  return result;
+}
+
 // No size of the user's.
 struct Unbounded_size
 {
@@ -239,7 +258,10 @@ them (`tetrahedralize_particles()`).
     \cgalParamExtra{exactly one of `edge_length` and `number_of_vertices` is required}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_vertices}
-    \cgalParamDescription{picks l* so that the mesh has about this many vertices}
+    \cgalParamDescription{picks l* so that the mesh has about this many vertices, n; if the mesh's
+      count m is off n by more than 15 % (where parts thinner than `min_edge_length` lose their flat
+      cells, or a box takes a whole number of lattice layers), meshes again for n sqrt(n / m)
+      (between n / 2 and 2 n) and returns the mesh closer to n (the visitor sees both runs)}
     \cgalParamType{double}
   \cgalParamNEnd
   \cgalParamNBegin{lattice}
@@ -397,9 +419,15 @@ lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
   s.grading = choose_parameter(get_parameter(np, internal_np::grading), defaults.grading);
   s.min_edge_length = choose_parameter(get_parameter(np, internal_np::min_edge_length), defaults.min_edge_length);
   s.check([](const char* parameter) { return "lattice_mesh_3(): " + std::string(parameter) + "()"; });
-  const auto sized = LM::internal::sized_field<Traits>(domain, field, size, p, s);
-  return LM::internal::run_lattice_mesher(domain, sized, p, choose_parameter<Traits>(get_parameter(np, internal_np::geom_traits)),
-                                          LM::internal::unwrap(visitor));
+  const Traits traits = choose_parameter<Traits>(get_parameter(np, internal_np::geom_traits));
+  auto run = [&](double count) {
+    LM::internal::Lattice_mesher_parameters q = p;
+    q.number_of_vertices = count;
+    const auto sized = LM::internal::sized_field<Traits>(domain, field, size, q, s);
+    return LM::internal::run_lattice_mesher(domain, sized, q, traits, LM::internal::unwrap(visitor));
+  };
+  return LM::internal::run_for_vertex_count(p.number_of_vertices, run,
+                                            [](const LM::Tetrahedral_mesh_3<typename Traits::Point_3>& m) { return m.points.size(); });
   }
 }
 

@@ -158,6 +158,34 @@ TEST(Lattice_mesh_3, NamedParametersAndDeterminism)
   EXPECT_EQ(with_seed(cube(), 7u), with_seed(cube(), 8u));
 }
 
+// A vertex count that the first mesh misses by more than 15 % is asked again, half the shortfall
+// added in logarithm (n sqrt(n / m), between n / 2 and 2 n), and the mesh closer to n is kept;
+// the cube [0.1, 1.1]^3 at 3,000 BCC vertices takes 5 lattice layers (2,484 vertices) at the l*
+// of the count model, and 3,297 asked again gives the 6 layers of a slightly smaller l*.
+TEST(Lattice_mesh_3, MissedVertexCountIsAskedAgain)
+{
+  std::vector<double> asked;
+  auto count_of = [](double m) { return m; };
+  auto runs = [&](std::vector<double> counts) {   // the mesh of each run has the next count
+    asked.clear();
+    return [&asked, counts](double n) { asked.push_back(n); return counts.at(asked.size() - 1); };
+  };
+  EXPECT_EQ(LM::internal::run_for_vertex_count(3000., runs({ 1500., 2600. }), count_of), 2600.);
+  ASSERT_EQ(asked.size(), 2u);
+  EXPECT_NEAR(asked[1], 3000. * std::sqrt(2.), 1e-9);
+  EXPECT_EQ(LM::internal::run_for_vertex_count(3000., runs({ 1500., 6000. }), count_of), 1500.);   // worse: the first
+  EXPECT_EQ(LM::internal::run_for_vertex_count(3000., runs({ 100., 1000. }), count_of), 1000.);
+  EXPECT_EQ(asked[1], 6000.);   // at most twice the count
+  EXPECT_EQ(LM::internal::run_for_vertex_count(3000., runs({ 3400. }), count_of), 3400.);   // within 15 %: once
+  EXPECT_EQ(asked.size(), 1u);
+  EXPECT_EQ(LM::internal::run_for_vertex_count(0., runs({ 10. }), count_of), 10.);   // an edge length: once
+  EXPECT_EQ(asked.size(), 1u);
+
+  const auto mesh = CGAL::lattice_mesh_3(cube(), Field(), CGAL::parameters::number_of_vertices(3000).number_of_threads(2));
+  EXPECT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
+  EXPECT_NEAR(double(mesh.points.size()), 3000., 450.);
+}
+
 // A size given by the user: h = 0.06 + 0.25 (x - 0.1) over the cube [0.1, 1.1]^3 (slope 0.25),
 // capped by l* = 0.25: the vertices crowd where h is small, about as the density h^-3 says, and
 // with a vertex count l* is chosen for it.
