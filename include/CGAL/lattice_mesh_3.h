@@ -53,15 +53,18 @@ run_lattice_mesher(const MeshDomain& domain, const FrameField& field, const inte
 // off n by more than 15 %, the mesh is made again for n sqrt(n / m) (between n / 2 and 2 n), and
 // the one closer to n is kept. Half the correction, in logarithm: the finer lattice resolves
 // more of the thin parts, and n^2 / m overshoots (3,000 asked: boeing 1,367 vertices, for 6,584
-// 5,111, for 4,443 3,115; cheese 1,315, 5,803, 3,331).
+// 5,111, for 4,443 3,115; cheese 1,315, 5,803, 3,331). A count that sizes given in lengths
+// cannot meet (std::invalid_argument) leaves the first mesh.
 template <typename Run, typename Vertices>
 auto run_for_vertex_count(double n, Run run, Vertices vertices) -> decltype(run(n))
 {
   auto result = run(n);
   const double m = double(vertices(result));
   if(!(n > 0.) || !(m > 0.) || std::abs(m - n) <= .15 * n) return result;
-  auto again = run(n * (std::min)(2., (std::max)(.5, std::sqrt(n / m))));
-  if(std::abs(double(vertices(again)) - n) < std::abs(m - n)) return again;
+  try {
+    auto again = run(n * (std::min)(2., (std::max)(.5, std::sqrt(n / m))));
+    if(std::abs(double(vertices(again)) - n) < std::abs(m - n)) return again;
+  } catch(const std::invalid_argument&) {}
   return result;
 }
 

@@ -180,6 +180,9 @@ TEST(Lattice_mesh_3, MissedVertexCountIsAskedAgain)
   EXPECT_EQ(asked.size(), 1u);
   EXPECT_EQ(LM::internal::run_for_vertex_count(0., runs({ 10. }), count_of), 10.);   // an edge length: once
   EXPECT_EQ(asked.size(), 1u);
+  // a second count that the sizes cannot meet leaves the first mesh
+  auto then_refused = [](double n) { if(n < 3000.) throw std::invalid_argument("too few"); return 4000.; };
+  EXPECT_EQ(LM::internal::run_for_vertex_count(3000., then_refused, count_of), 4000.);
 
   const auto mesh = CGAL::lattice_mesh_3(cube(), Field(), CGAL::parameters::number_of_vertices(3000).number_of_threads(2));
   EXPECT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
