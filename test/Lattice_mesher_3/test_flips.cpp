@@ -9,6 +9,7 @@
 // and never lower the smallest dihedral angle.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Lattice_mesher_3/Implicit_lattice_domain_3.h>
 #include <CGAL/Lattice_mesher_3/Polyhedral_lattice_domain_3.h>
 #include <CGAL/Lattice_mesher_3/check_mesh.h>
 #include <CGAL/Lattice_mesher_3/collapse_edges.h>
@@ -23,6 +24,7 @@
 #include "test_meshes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <random>
 #include <set>
@@ -168,6 +170,47 @@ TEST(Smooth_vertices, LeavesLatticeTetrahedraAlone)
   EXPECT_EQ(LM::smooth_vertices(mesh, unit_cube(), field, CGAL::parameters::edge_length(1. / n).lattice(LM::Lattice_type::BCC)), 0u);
   EXPECT_EQ(mesh.points, lattice.points);
   EXPECT_GT(LM::smooth_vertices(mesh, unit_cube(), field), 0u);   // no lattice
+}
+
+// A unit sphere of particles (l* = 1/4: surface particles a Fibonacci lattice, a BCC lattice
+// at least 0.6 l* inside) without the surface particles of a cap 0.6 radians wide, and an
+// interior particle half an edge under its pole: connected as they are, the boundary dips to the
+// interior particles that poke through the cap's chord; the tetrahedralization adds surface
+// particles above those more than l* / 4 deep, and no boundary vertex is left that deep.
+TEST(Tetrahedralize_particles, FillsTheGapsOfTheSurfaceParticles)
+{
+  const LM::Constant_frame_field_3<Traits> field;
+  const auto sphere = LM::make_sphere_domain_3<K>(CGAL::ORIGIN, 1.);
+  const double l = .25;
+  LM::Particle_set_3<Point_3> ps;
+  const int n = 200;
+  for(int i = 0; i < n; ++i) {
+    const double z = 1. - (2. * i + 1.) / n, r = std::sqrt(1. - z * z), phi = i * CGAL_PI * (3. - std::sqrt(5.));
+    if(z < std::cos(.6)) ps.push_back(Point_3(r * std::cos(phi), r * std::sin(phi), z), LM::Particle_kind::BOUNDARY);
+  }
+  for(int i = -4; i <= 4; ++i) for(int j = -4; j <= 4; ++j) for(int k = -4; k <= 4; ++k)
+    for(double h : { 0., .5 }) {
+      const Point_3 p((i + h) * l, (j + h) * l, (k + h) * l);
+      if(std::sqrt(CGAL::squared_distance(p, Point_3(CGAL::ORIGIN))) < 1. - .6 * l) ps.push_back(p, LM::Particle_kind::FREE);
+    }
+  ps.push_back(Point_3(0., 0., 1. - .5 * l), LM::Particle_kind::FREE);
+  auto deepest = [](const LM::Tetrahedral_mesh_3<Point_3>& mesh) {   // boundary vertex from the sphere
+    double d = 0.;
+    for(const auto& f : mesh.boundary_faces)
+      for(int v : f) d = (std::max)(d, 1. - std::sqrt(CGAL::squared_distance(mesh.points[std::size_t(v)], Point_3(CGAL::ORIGIN))));
+    return d;
+  };
+  LM::internal::Tetrahedralization_options o;
+  o.edge_length = l;
+  const LM::Tetrahedral_mesh_3<Point_3> pitted = LM::internal::connect_particles(ps, sphere, field, o, Traits());
+  ASSERT_TRUE(LM::check_tetrahedral_mesh(pitted).valid());
+  EXPECT_GT(deepest(pitted), .45 * l);
+  const LM::Tetrahedral_mesh_3<Point_3> filled = LM::tetrahedralize_particles(ps, sphere, field, CGAL::parameters::edge_length(l));
+  EXPECT_TRUE(LM::check_tetrahedral_mesh(filled).valid());
+  EXPECT_GT(filled.points.size(), pitted.points.size());
+  EXPECT_LT(deepest(filled), .25 * l);
+  o.pit_depth = 0.;
+  EXPECT_EQ(LM::internal::tetrahedralize_particles(ps, sphere, field, o, Traits()).tets, pitted.tets);
 }
 
 // The boundary faces as triples of points (contractions renumber the vertices).

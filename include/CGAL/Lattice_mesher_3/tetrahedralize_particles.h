@@ -50,8 +50,13 @@ struct Tetrahedralization_options
   /// dropped, it left the edge chamfered (Hausdorff 0.25 to the cube of side 10).
   double wedge_angle = 20.;
   /// l*, which sets the neighbourhood (1.3 l*) of the isotropic embedding under a varying
-  /// stretch; 0: estimated from the number of particles and the isotropic volume
+  /// stretch and the depth of the pits filled; 0: estimated from the number of particles and
+  /// the isotropic volume
   double edge_length = 0.;
+  /// A boundary vertex that is an interior particle more than this times l* from the surface
+  /// (isotropic space) sits in a pit, where the surface particles left a gap: a boundary particle
+  /// at the nearest surface point fills it (0: none).
+  double pit_depth = 0.25;
   int threads = 1;
 };
 
@@ -284,21 +289,39 @@ std::size_t untangle_by_moves(Tetrahedral_mesh_3<Point_3>& mesh)
 
 namespace internal {
 
+// The surface points nearest to the boundary vertices that are interior particles more than
+// `depth` l* from the surface (isotropic space), but for those within l* / 2 of a boundary vertex
+// around them or of one another.
+template <typename Point_3, typename Domain, typename FrameField>
+std::vector<Point_3> pit_fillers(const Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain, const FrameField& field,
+                                 double l, double depth)
+{
+  std::vector<std::vector<int> > ring(mesh.points.size());
+  for(const std::array<int, 3>& f : mesh.boundary_faces)
+    for(int i = 0; i < 3; ++i) ring[std::size_t(f[i])].insert(ring[std::size_t(f[i])].end(), { f[(i + 1) % 3], f[(i + 2) % 3] });
+  std::vector<Point_3> fillers;
+  for(std::size_t v = 0; v < mesh.points.size(); ++v) {
+    if(ring[v].empty() || mesh.vertex_kinds[v] != Particle_kind::FREE) continue;
+    const Point_3 q = domain.project_on_surface(mesh.points[v]).point;
+    const Mat3 b = isotropic_map(field.frame(q), q);
+    auto within = [&](const Point_3& p, double r) { return (b * (to_eigen(p) - to_eigen(q))).norm() < r * l; };
+    if(within(mesh.points[v], depth) ||
+       std::any_of(ring[v].begin(), ring[v].end(), [&](int w) { return within(mesh.points[std::size_t(w)], .5); }) ||
+       std::any_of(fillers.begin(), fillers.end(), [&](const Point_3& p) { return within(p, .5); }))
+      continue;
+    fillers.push_back(q);
+  }
+  return fillers;
+}
+
 // see tetrahedralize_particles()
 template <typename Domain, typename FrameField, typename Point_3, typename GT>
-Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_3>& ps, const Domain& domain,
-                                                     const FrameField& field, const Tetrahedralization_options& o,
-                                                     const GT& gt)
+Tetrahedral_mesh_3<Point_3> connect_particles(const Particle_set_3<Point_3>& ps, const Domain& domain,
+                                              const FrameField& field, const Tetrahedralization_options& o, const GT& gt)
 {
   typedef typename Domain::Geom_traits K;
-  if(ps.size() < 4)
-    throw std::invalid_argument("tetrahedralize_particles(): fewer than 4 particles");
   const std::vector<internal::Vec3> x = internal::to_vectors(ps.points);
-  double l = o.edge_length;
-  if(!(l > 0.)) {   // the cube edge of the sparsest lattice (FCC) for this many particles
-    const double iso_volume = domain.volume() * internal::sample_det_b(domain, field, 4096).mean;
-    l = std::cbrt(4. * iso_volume / double(ps.size()));
-  }
+  const double l = o.edge_length;
   bool uniform = true;
   const std::vector<internal::Vec3> y = internal::isotropic_embedding<K>(x, field, 1.3 * l, o.threads, uniform);
   if(uniform) return internal::restricted_delaunay(ps, y, domain, field, o, gt);
@@ -340,6 +363,25 @@ Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_
   return mesh;
 }
 
+template <typename Domain, typename FrameField, typename Point_3, typename GT>
+Tetrahedral_mesh_3<Point_3> tetrahedralize_particles(const Particle_set_3<Point_3>& ps, const Domain& domain,
+                                                     const FrameField& field, const Tetrahedralization_options& options,
+                                                     const GT& gt)
+{
+  if(ps.size() < 4)
+    throw std::invalid_argument("tetrahedralize_particles(): fewer than 4 particles");
+  Tetrahedralization_options o = options;
+  if(!(o.edge_length > 0.))   // the cube edge of the sparsest lattice (FCC) for this many particles
+    o.edge_length = std::cbrt(4. * domain.volume() * internal::sample_det_b(domain, field, 4096).mean / double(ps.size()));
+  Tetrahedral_mesh_3<Point_3> mesh = connect_particles(ps, domain, field, o, gt);
+  const std::vector<Point_3> fillers = o.pit_depth > 0. ? pit_fillers(mesh, domain, field, o.edge_length, o.pit_depth)
+                                                         : std::vector<Point_3>();
+  if(fillers.empty()) return mesh;
+  Particle_set_3<Point_3> filled = ps;
+  for(const Point_3& p : fillers) filled.push_back(p, Particle_kind::BOUNDARY);
+  return connect_particles(filled, domain, field, o, gt);
+}
+
 } // namespace internal
 
 /*!
@@ -352,8 +394,11 @@ vertices are boundary particles and whose centroid lies within `flatness_ratio` 
 edge length of the boundary are dropped (they would be slivers lying on the surface), but for
 the wedges along sharp edges (`wedge_angle`). The boundary is then repaired into a closed
 2-manifold: cells are removed around non-manifold edges and vertices until none remains, the
-kept wedges first. Particles that end up in no tetrahedron are not output. The
-tetrahedra are positively oriented and `boundary_faces` are oriented outward.
+kept wedges first. A boundary vertex that is an interior particle more than l* / 4 from the
+surface (isotropic space) sits in a pit, where the surface particles left a gap: a boundary
+particle is added at the surface point nearest to it (unless one lies within l* / 2 of that
+point) and the particles are connected again. Particles that end up in no tetrahedron are not
+output. The tetrahedra are positively oriented and `boundary_faces` are oriented outward.
 
 The isotropic space is where the field's metric B^T B is Euclidean: the particles themselves
 under a cross field or a constant frame, and under a varying stretch the least-squares
@@ -382,7 +427,7 @@ already conforms to the boundary; CGAL's triangulation is exact and robust on de
     \cgalParamDefault{20}
   \cgalParamNEnd
   \cgalParamNBegin{edge_length}
-    \cgalParamDescription{l*, which sets the neighbourhood (1.3 l*) of the isotropic embedding under a varying stretch}
+    \cgalParamDescription{l*, which sets the neighbourhood (1.3 l*) of the isotropic embedding under a varying stretch and the depth of the pits filled}
     \cgalParamType{double}
     \cgalParamDefault{0: estimated from the number of particles and the isotropic volume}
   \cgalParamNEnd
