@@ -30,15 +30,18 @@ namespace internal {
 // the region of the padding is outside; a cavity or a part enclosed by another is a region of
 // its own), and for inside cells the Chebyshev distance k, in cells, to the nearest touched cell. A point in an untouched cell needs no ray cast to be
 // classified, and one in an inside cell is at least (k - 1) h from the surface: the mesher
-// skips the projections of particles deep inside (most of them) with it.
+// skips the projections of particles deep inside (most of them) with it. Each untouched cell
+// also keeps its region's winding number, so that a point in a touched cell is classified by a
+// segment to a nearby untouched cell's centre rather than by a ray across the whole surface.
 class Surface_cell_grid_3
 {
 public:
   Surface_cell_grid_3() = default;
 
-  // `triangles`: a range of K::Triangle_3; `inside(x, y, z)`: the side of a point off the surface
-  template <typename TriangleRange, typename InsideTest>
-  Surface_cell_grid_3(const CGAL::Bbox_3& box, const TriangleRange& triangles, const InsideTest& inside,
+  // `triangles`: a range of K::Triangle_3; `winding(x, y, z)`: the winding number of the surface
+  // about a point off it (inside: at least 1)
+  template <typename TriangleRange, typename WindingNumber>
+  Surface_cell_grid_3(const CGAL::Bbox_3& box, const TriangleRange& triangles, const WindingNumber& winding,
                       int resolution = 128)
   {
     const std::array<double, 3> size = { box.x_span(), box.y_span(), box.z_span() };
@@ -54,6 +57,7 @@ public:
     }
     state_.assign(std::size_t(n_[0]) * n_[1] * n_[2], UNKNOWN);
     depth_.assign(state_.size(), 0);
+    winding_.assign(state_.size(), 0);
 
     // touched cells: a margin of 1e-6 h on each box keeps the test valid for a point rounded
     // into a neighbouring cell by cell_of()
@@ -76,10 +80,11 @@ public:
     // untouched cells takes the side of its first cell's centre
     std::deque<std::array<int, 3> > queue;
     unsigned char side = OUTSIDE;
+    int region_winding = 0;
     auto visit = [&](int i, int j, int k) {
       if(!on_grid(i, j, k)) return;
       unsigned char& s = state_[index(i, j, k)];
-      if(s == UNKNOWN) { s = side; queue.push_back({ i, j, k }); }
+      if(s == UNKNOWN) { s = side; winding_[index(i, j, k)] = region_winding; queue.push_back({ i, j, k }); }
     };
     auto fill = [&] {
       while(!queue.empty()) {
@@ -103,8 +108,8 @@ public:
       for(int j = 0; j < n_[1]; ++j)
         for(int k = 0; k < n_[2]; ++k)
           if(state_[index(i, j, k)] == UNKNOWN) {
-            side = inside(origin_[0] + (i + .5) * h_, origin_[1] + (j + .5) * h_, origin_[2] + (k + .5) * h_)
-                     ? INSIDE : OUTSIDE;
+            region_winding = winding(origin_[0] + (i + .5) * h_, origin_[1] + (j + .5) * h_, origin_[2] + (k + .5) * h_);
+            side = region_winding >= 1 ? INSIDE : OUTSIDE;
             visit(i, j, k);
             fill();
           }
@@ -138,6 +143,28 @@ public:
     const std::ptrdiff_t c = locate(x, y, z);
     if(c < 0) return c == OFF_GRID ? -1 : 0;
     return state_[c] == INSIDE ? 1 : state_[c] == OUTSIDE ? -1 : 0;
+  }
+
+  // Calls f(x, y, z, w) with the centres (x, y, z) of the untouched cells within `radius` cells
+  // (Chebyshev) of the cell of the point, nearest first, and their winding numbers w, until f
+  // returns true; returns whether one did.
+  template <typename F>
+  bool find_untouched_cell_near(double x, double y, double z, int radius, F f) const
+  {
+    const std::ptrdiff_t here = locate(x, y, z);
+    if(here < 0) return false;
+    const std::array<int, 3> c = cell_of(x, y, z);
+    for(int r = 1; r <= radius; ++r)
+      for(int i = c[0] - r; i <= c[0] + r; ++i)
+        for(int j = c[1] - r; j <= c[1] + r; ++j)
+          for(int k = c[2] - r; k <= c[2] + r; ++k) {
+            if((std::max)({ std::abs(i - c[0]), std::abs(j - c[1]), std::abs(k - c[2]) }) != r || !on_grid(i, j, k)) continue;
+            const std::size_t q = index(i, j, k);
+            if(state_[q] != INSIDE && state_[q] != OUTSIDE) continue;
+            if(f(origin_[0] + (i + .5) * h_, origin_[1] + (j + .5) * h_, origin_[2] + (k + .5) * h_, int(winding_[q])))
+              return true;
+          }
+    return false;
   }
 
   // a lower bound of the distance to the surface of a point inside; 0 if not known inside
@@ -179,6 +206,7 @@ private:
   std::array<double, 3> origin_ = { 0., 0., 0. };
   std::array<int, 3> n_ = { 0, 0, 0 };
   std::vector<unsigned char> state_, depth_;
+  std::vector<int> winding_;
 };
 
 } // namespace internal

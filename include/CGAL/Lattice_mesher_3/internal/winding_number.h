@@ -82,6 +82,21 @@ public:
     return 0;
   }
 
+  // The winding number about p from that about q, `winding_at_q`, and the triangles that the
+  // segment pq crosses: false if it touches an edge, a vertex or a plane at p or q.
+  bool from(const Point_3& p, const Point_3& q, int winding_at_q, int& winding) const
+  {
+    winding = winding_at_q;
+    bool degenerate = false;
+    tree_.all_intersected_primitives(typename K::Segment_3(p, q), boost::make_function_output_iterator([&](typename Triangles::const_iterator t) {
+      if(degenerate) return;
+      const int c = crossing(*t, p, q);
+      if(c == degenerate_crossing) degenerate = true;
+      else winding += c;
+    }));
+    return !degenerate;
+  }
+
 private:
   typedef std::vector<Triangle_3> Triangles;
   typedef CGAL::AABB_triangle_primitive<K, typename Triangles::const_iterator> Primitive;
