@@ -117,17 +117,17 @@ public:
 
   /// the winding number of the surface about `p` is at least 1; computed only where the cell
   /// grid (below) does not tell, from a nearby cell of the grid that does (by a ray cast
-  /// through the whole surface if none within 4 cells gives a segment clear of its edges)
+  /// through the whole surface if none of the 8 nearest within 4 cells gives a segment clear of its edges)
   bool is_inside(const Point_3& p) const
   {
     const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
     const int side = m_data->cells.side(x, y, z);
     if(side != 0) return side > 0;
-    int winding = 0, tries = 0;
-    const bool found = m_data->cells.find_untouched_cell_near(x, y, z, 4, [&](double qx, double qy, double qz, int at_q) {
-      return ++tries > 8 || m_data->winding.from(p, Point_3(qx, qy, qz), at_q, winding);
+    int winding = 0;
+    const bool found = m_data->cells.find_untouched_cell_near(x, y, z, 4, 8, [&](double qx, double qy, double qz, int at_q) {
+      return m_data->winding.from(p, Point_3(qx, qy, qz), at_q, winding);
     });
-    return (found && tries <= 8 ? winding : m_data->winding(p)) >= 1;
+    return (found ? winding : m_data->winding(p)) >= 1;
   }
 
   /// from a grid of 128 cubic cells along the longest side of the bounding box, classified in

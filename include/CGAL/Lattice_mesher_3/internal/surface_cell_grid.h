@@ -145,14 +145,13 @@ public:
     return state_[c] == INSIDE ? 1 : state_[c] == OUTSIDE ? -1 : 0;
   }
 
-  // Calls f(x, y, z, w) with the centres (x, y, z) of the untouched cells within `radius` cells
-  // (Chebyshev) of the cell of the point, nearest first, and their winding numbers w, until f
-  // returns true; returns whether one did.
+  // Calls f(x, y, z, w) with the centres (x, y, z) of at most `count` untouched cells within
+  // `radius` cells (Chebyshev) of the cell of the point, nearest first, and their winding numbers
+  // w, until f returns true; returns whether one did.
   template <typename F>
-  bool find_untouched_cell_near(double x, double y, double z, int radius, F f) const
+  bool find_untouched_cell_near(double x, double y, double z, int radius, int count, F f) const
   {
-    const std::ptrdiff_t here = locate(x, y, z);
-    if(here < 0) return false;
+    if(locate(x, y, z) < 0) return false;
     const std::array<int, 3> c = cell_of(x, y, z);
     for(int r = 1; r <= radius; ++r)
       for(int i = c[0] - r; i <= c[0] + r; ++i)
@@ -161,6 +160,7 @@ public:
             if((std::max)({ std::abs(i - c[0]), std::abs(j - c[1]), std::abs(k - c[2]) }) != r || !on_grid(i, j, k)) continue;
             const std::size_t q = index(i, j, k);
             if(state_[q] != INSIDE && state_[q] != OUTSIDE) continue;
+            if(count-- == 0) return false;
             if(f(origin_[0] + (i + .5) * h_, origin_[1] + (j + .5) * h_, origin_[2] + (k + .5) * h_, int(winding_[q])))
               return true;
           }

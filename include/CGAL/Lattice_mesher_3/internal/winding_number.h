@@ -66,18 +66,9 @@ public:
                                             { .6657, -.2971, .6845 }, { -.7793, -.5412, .3159 } };
     const double reach = 2. * (std::sqrt(CGAL::square(box_.x_span()) + CGAL::square(box_.y_span())
                                          + CGAL::square(box_.z_span())) + 1.);
-    for(const auto& d : directions) {
-      const Point_3 q(p.x() + reach * d[0], p.y() + reach * d[1], p.z() + reach * d[2]);
-      int winding = 0;
-      bool degenerate = false;
-      const typename K::Segment_3 ray(p, q);
-      tree_.all_intersected_primitives(ray, boost::make_function_output_iterator([&](typename Triangles::const_iterator t) {
-        if(degenerate) return;
-        const int c = crossing(*t, p, q);
-        if(c == degenerate_crossing) degenerate = true;
-        else winding += c;
-      }));
-      if(!degenerate) return winding;
+    for(const auto& d : directions) {   // to a point off the box, where the winding number is 0
+      int winding;
+      if(from(p, Point_3(p.x() + reach * d[0], p.y() + reach * d[1], p.z() + reach * d[2]), 0, winding)) return winding;
     }
     return 0;
   }
