@@ -488,6 +488,32 @@ TEST(PolyhedralDomain, CellGridAgreesWithRayCastAndProjection)
   check(Polyhedral_domain(LM::make_cube_surface_3<K>(1., 11.)), "cube");
 }
 
+// A point on the surface is not inside. The insertion puts many candidates exactly there, in the
+// plane of an axis-aligned face; the inside test finds the triangle under them with its first
+// segment, whose winding number is not that of the cell it leads to.
+TEST(PolyhedralDomain, PointsOnTheSurfaceAreNotInside)
+{
+  auto check = [](const Polyhedral_domain& d, const char* name) {
+    const double lo = d.bbox().xmin(), hi = d.bbox().xmax();   // a cube: the same on every axis
+    ASSERT_EQ(lo, d.bbox().zmin());
+    ASSERT_EQ(hi, d.bbox().zmax());
+    CGAL::Random rng(3);
+    for(int i = 0; i < 2000; ++i) {
+      double c[3];
+      for(int a = 0; a < 3; ++a) c[a] = rng.get_double(lo, hi);
+      const int axis = rng.get_int(0, 3);
+      c[axis] = rng.get_int(0, 2) ? lo : hi;
+      const Point_3 p(c[0], c[1], c[2]);
+      ASSERT_FALSE(d.is_inside(p)) << name << " at " << p;
+      // just inside, the same cell: inside
+      c[axis] += c[axis] == lo ? 1e-9 : -1e-9;
+      ASSERT_TRUE(d.is_inside(Point_3(c[0], c[1], c[2]))) << name << " at " << p;
+    }
+  };
+  check(Polyhedral_domain(LM::make_cube_surface_3<K>(1., 11.)), "cube");
+  check(Polyhedral_domain(refined_cube(Point_3(0., 0., 0.), 2., 20)), "cube of 2,400 triangles");
+}
+
 // OFF files may list vertices that no face uses (prim.off in CGAL's data): the domain drops them,
 // where orient_to_bound_a_volume() dereferenced their null halfedge.
 TEST(PolyhedralDomain, IsolatedVerticesAreRemoved)

@@ -265,7 +265,14 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     worst_first(st);
     std::size_t accepted = 0;
     internal::pattern_search(x, directions, mean_edge, [&](const Eigen::Vector3d& y, Eigen::Vector3d& at) {
-      const Point_3 candidate = constrain(v, Point_3(y[0], y[1], y[2]));
+      Point_3 candidate(y[0], y[1], y[2]);
+      // a boundary vertex's candidate is first scored where it is, in the tangent plane: most
+      // lose there by far, and only those within a tenth of the best pay for their projection
+      // onto the surface (the tangent plane alone, with no margin, lowers the smallest angle of
+      // 46 of the 94 closed surfaces of libcgal-demo at 3,000 vertices)
+      if(mesh.vertex_kinds[v] == Particle_kind::BOUNDARY && !(star_quality(st, candidate, 1.1 * best.penalty).penalty < 1.1 * best.penalty))
+        return false;
+      candidate = constrain(v, candidate);
       const Score q = star_quality(st, candidate, best.penalty);
       if(!better(q, best)) return false;
       best = q; mesh.points[v] = candidate; ++accepted; worst_first(st);
@@ -339,7 +346,9 @@ directions: for free vertices the 6 axes and 8 diagonals, for boundary vertices 
 of the tangent plane (the surface normal comes from `project_on_surface()`), for sharp-edge
 vertices the 2 of the curve's tangent. The worst tetrahedra are those below `selection_angle`
 that are not lattice tetrahedra (`edge_length`). Boundary vertices stay on the
-surface and sharp-edge vertices on the feature curves (each candidate is projected back), fixed
+surface and sharp-edge vertices on the feature curves (each candidate is projected back; a
+boundary vertex's candidate only if it scores within a tenth of the best in the tangent plane,
+where most lose by far), fixed
 vertices (corners) do not move. After the first pass, only vertices sharing a
 tetrahedron with a vertex moved in the previous pass are searched again. A move is kept only if no tetrahedron of the star
 is inverted (exact orientation tests), the shortfall falls and the star's smallest angle does not

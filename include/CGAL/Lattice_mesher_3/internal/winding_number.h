@@ -15,6 +15,7 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/boost/iterator/counting_iterator.hpp>
 #include <CGAL/Bbox_3.h>
+#include <CGAL/Intersections_3/Point_3_Triangle_3.h>
 
 #include <boost/iterator/function_output_iterator.hpp>
 
@@ -54,7 +55,7 @@ public:
   Winding_number_3(const Winding_number_3&) = delete;
   Winding_number_3& operator=(const Winding_number_3&) = delete;
 
-  // 0 also for a point on the surface (every ray degenerate) and off the surface's box
+  // 0 also for a point on the surface and off the surface's box
   int operator()(const Point_3& p) const
   {
     if(triangles_.empty() || !CGAL::do_overlap(box_, p.bbox())) return 0;
@@ -74,34 +75,40 @@ public:
   }
 
   // The winding number about p from that about q, `winding_at_q`, and the triangles that the
-  // segment pq crosses: false if it touches an edge, a vertex or a plane at p or q.
+  // segment pq crosses: false if it touches an edge, a vertex or a plane at q, or lies in a
+  // triangle's plane. A point on the surface, which every segment from it touches, has 0 (as
+  // for operator()), found by the first segment.
   bool from(const Point_3& p, const Point_3& q, int winding_at_q, int& winding) const
   {
     winding = winding_at_q;
-    bool degenerate = false;
+    bool degenerate = false, on_surface = false;
     tree_.all_intersected_primitives(typename K::Segment_3(p, q), boost::make_function_output_iterator([&](typename Triangles::const_iterator t) {
-      if(degenerate) return;
+      if(degenerate || on_surface) return;
       const int c = crossing(*t, p, q);
       if(c == degenerate_crossing) degenerate = true;
+      else if(c == p_on_triangle) on_surface = true;
       else winding += c;
     }));
-    return !degenerate;
+    if(on_surface) winding = 0;
+    return on_surface || !degenerate;
   }
 
 private:
   typedef std::vector<Triangle_3> Triangles;
   typedef CGAL::AABB_triangle_primitive<K, typename Triangles::const_iterator> Primitive;
   typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
-  static constexpr int degenerate_crossing = 2;
+  static constexpr int degenerate_crossing = 2, p_on_triangle = 3;
 
-  // +1 if the segment pq leaves through the triangle (p on its inner side), -1 if it enters, 0
-  // if it misses it, degenerate_crossing if it touches an edge, a vertex or the plane at p or q
+  // For a triangle that the segment pq meets: +1 if pq leaves through it (p on its inner side),
+  // -1 if it enters, 0 if it misses it, p_on_triangle if p lies on it (in its plane,
+  // q not: they meet at p), degenerate_crossing if pq touches an edge, a vertex or the plane at q
   static int crossing(const Triangle_3& t, const Point_3& p, const Point_3& q)
   {
     const typename K::Orientation_3 orientation = K().orientation_3_object();
     const CGAL::Orientation sp = orientation(t[0], t[1], t[2], p);
     const CGAL::Orientation sq = orientation(t[0], t[1], t[2], q);
-    if(sp == CGAL::COPLANAR || sq == CGAL::COPLANAR) return degenerate_crossing;
+    if(sq == CGAL::COPLANAR) return degenerate_crossing;
+    if(sp == CGAL::COPLANAR) return CGAL::do_intersect(t, p) ? p_on_triangle : degenerate_crossing;
     if(sp == sq) return 0;
     const CGAL::Orientation e0 = orientation(p, q, t[0], t[1]);
     const CGAL::Orientation e1 = orientation(p, q, t[1], t[2]);
