@@ -15,7 +15,6 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/boost/iterator/counting_iterator.hpp>
 #include <CGAL/Bbox_3.h>
-#include <CGAL/Intersections_3/Point_3_Triangle_3.h>
 
 #include <boost/iterator/function_output_iterator.hpp>
 
@@ -81,16 +80,15 @@ public:
   bool from(const Point_3& p, const Point_3& q, int winding_at_q, int& winding) const
   {
     winding = winding_at_q;
-    bool degenerate = false, on_surface = false;
+    int stop = 0;   // degenerate_crossing or p_on_triangle, once a triangle says so
     tree_.all_intersected_primitives(typename K::Segment_3(p, q), boost::make_function_output_iterator([&](typename Triangles::const_iterator t) {
-      if(degenerate || on_surface) return;
+      if(stop != 0) return;
       const int c = crossing(*t, p, q);
-      if(c == degenerate_crossing) degenerate = true;
-      else if(c == p_on_triangle) on_surface = true;
+      if(c == degenerate_crossing || c == p_on_triangle) stop = c;
       else winding += c;
     }));
-    if(on_surface) winding = 0;
-    return on_surface || !degenerate;
+    if(stop == p_on_triangle) winding = 0;
+    return stop != degenerate_crossing;
   }
 
 private:
@@ -108,7 +106,7 @@ private:
     const CGAL::Orientation sp = orientation(t[0], t[1], t[2], p);
     const CGAL::Orientation sq = orientation(t[0], t[1], t[2], q);
     if(sq == CGAL::COPLANAR) return degenerate_crossing;
-    if(sp == CGAL::COPLANAR) return CGAL::do_intersect(t, p) ? p_on_triangle : degenerate_crossing;
+    if(sp == CGAL::COPLANAR) return p_on_triangle;   // pq meets the plane at p only, so p is on t
     if(sp == sq) return 0;
     const CGAL::Orientation e0 = orientation(p, q, t[0], t[1]);
     const CGAL::Orientation e1 = orientation(p, q, t[1], t[2]);
