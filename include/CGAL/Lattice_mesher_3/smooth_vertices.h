@@ -102,18 +102,48 @@ inline std::vector<Eigen::Vector3d> axis_and_diagonal_directions()
   return directions;
 }
 
-// Pattern search from x: steps of 30%, 10% and 3% of `unit` along each direction, each step size
-// repeated while it improves (at most 4 times). `attempt(y, x)` tries the point y; if it takes
-// it, it sets x to where the vertex went and returns true.
+// Pattern search from x: steps of 30%, 10% and 3% of `unit` along each direction (only 3% if
+// `fine_only`), each step size repeated while it improves (at most 4 times). `attempt(y, x)`
+// tries the point y; if it takes it, it sets x to where the vertex went and returns true.
 template <typename Attempt>
-void pattern_search(Eigen::Vector3d x, const std::vector<Eigen::Vector3d>& directions, double unit, Attempt attempt)
+void pattern_search(Eigen::Vector3d x, const std::vector<Eigen::Vector3d>& directions, double unit, Attempt attempt,
+                    bool fine_only = false)
 {
-  for(double step : { .3, .1, .03 })
+  for(double step : { .3, .1, .03 }) {
+    if(fine_only && step > .03) continue;
     for(int repeat = 0, improved = 1; improved && repeat < 4; ++repeat) {
       improved = 0;
       for(const Eigen::Vector3d& d : directions)
         if(attempt(Eigen::Vector3d(x + step * unit * d), x)) improved = 1;
     }
+  }
+}
+
+// Descent from x along minus the gradient of `penalty`, by forward differences of 1% of `unit`
+// along the vectors of `basis` (the directions the vertex may move in), with steps of 10%, 3% and
+// 1% of `unit` tried in turn; at most 4 times, and no further once no step is taken. `attempt`
+// as in pattern_search(); `current()` is the penalty where the vertex is. Returns x's last place.
+template <typename Penalty, typename Current, typename Attempt>
+Eigen::Vector3d gradient_descent(Eigen::Vector3d x, const std::vector<Eigen::Vector3d>& basis, const Eigen::Matrix3d& b,
+                                 double unit, Penalty penalty, Current current, Attempt attempt)
+{
+  const double h = .01 * unit;
+  for(int iteration = 0; iteration < 4; ++iteration) {
+    Eigen::Vector3d d = Eigen::Vector3d::Zero();
+    for(const Eigen::Vector3d& e : basis) {
+      const double p = penalty(Eigen::Vector3d(x + h * e));
+      if(!std::isfinite(p)) return x;   // an inverted tetrahedron within h: no gradient
+      d -= (p - current()) / h * e;
+    }
+    const double length = (b * d).norm();   // isotropic
+    if(!(length > 0.)) return x;
+    d /= length;
+    bool moved = false;
+    for(double step : { .1, .03, .01 })
+      if(attempt(Eigen::Vector3d(x + step * unit * d), x)) { moved = true; break; }
+    if(!moved) return x;
+  }
+  return x;
 }
 
 } // namespace internal
@@ -231,7 +261,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     // Free vertices try the 6 axis and 8 diagonal directions; a boundary vertex only the 8 of
     // its tangent plane and a sharp-edge vertex the 2 of its curve (the others are projected
     // back to about where they started), each besides the direction to the star's centroid.
-    std::vector<Eigen::Vector3d> directions;
+    std::vector<Eigen::Vector3d> directions, basis;   // basis: of the space the vertex moves in
     auto add_centroid_direction = [&](const Eigen::Vector3d& d) { if((b * d).norm() > 1e-3 * mean_edge) directions.push_back(d.normalized()); };
     switch(mesh.vertex_kinds[v]) {
       case Particle_kind::BOUNDARY: {
@@ -240,6 +270,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
         const Eigen::Vector3d a = n.unitOrthogonal(), b = n.cross(a);
         for(int k = 0; k < 8; ++k)
           directions.push_back(std::cos(k * CGAL_PI / 4.) * a + std::sin(k * CGAL_PI / 4.) * b);
+        basis = { a, b };
         add_centroid_direction(centroid - x - n.dot(centroid - x) * n);
         break;
       }
@@ -248,6 +279,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
         if(!t.allFinite()) break;
         directions.push_back(t);
         directions.push_back(-t);
+        basis = { t };
         add_centroid_direction(t.dot(centroid - x) * t);
         break;
       }
@@ -256,15 +288,17 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     if(directions.empty()) {
       directions = internal::axis_and_diagonal_directions();
       add_centroid_direction(centroid - x);
+      basis = { Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ() };
     }
     // each direction scaled to unit isotropic length (exactly as it is when B = I)
     for(Eigen::Vector3d& d : directions) d *= d.norm() / (b * d).norm();
+    for(Eigen::Vector3d& d : basis) d *= d.norm() / (b * d).norm();
     std::vector<Star_tet> st;
     gather_star(v, st);
     Score best = star_quality(st, mesh.points[v], HUGE_VAL);
     worst_first(st);
     std::size_t accepted = 0;
-    internal::pattern_search(x, directions, mean_edge, [&](const Eigen::Vector3d& y, Eigen::Vector3d& at) {
+    auto attempt = [&](const Eigen::Vector3d& y, Eigen::Vector3d& at) {
       Point_3 candidate(y[0], y[1], y[2]);
       // a boundary vertex's candidate is first scored where it is, in the tangent plane: most
       // lose there by far, and only those within a tenth of the best pay for their projection
@@ -278,7 +312,20 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
       best = q; mesh.points[v] = candidate; ++accepted; worst_first(st);
       at = internal::to_eigen(candidate);
       return true;
-    });
+    };
+    // A star with a tetrahedron below the floor may need a jump: the pattern search from its
+    // largest step. The others descend along the penalty's gradient (most of the smoothing's
+    // moves are 3% steps of such stars, which the pattern search pays 15 tries each for), then
+    // try the finest pattern step, since the penalty's kinks (a smallest angle changing edge)
+    // stop a descent short. (Design chapter: a quarter less time, the same quality.)
+    if(best.worst < o.floor_angle || basis.empty()) {
+      internal::pattern_search(x, directions, mean_edge, attempt);
+      return accepted;
+    }
+    auto penalty = [&](const Eigen::Vector3d& y) { return star_quality(st, Point_3(y[0], y[1], y[2]), HUGE_VAL).penalty; };
+    const Eigen::Vector3d descended =
+      internal::gradient_descent(x, basis, b, mean_edge, penalty, [&] { return best.penalty; }, attempt);
+    internal::pattern_search(descended, directions, mean_edge, attempt, true);
     return accepted;
   };
 
@@ -339,12 +386,14 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
 \ingroup PkgLatticeMesher3Flips
 
 Moves the vertices of the worst tetrahedra to lower the shortfall of their star's smallest
-dihedral angles (measured in the isotropic space of `field`) below a target: a pattern search with
-steps of 30%, 10% and 3% of the star's mean edge length (lengths in the isotropic space of a
-tetrahedron of the star) over the direction to the star's centroid and the axis and diagonal
-directions: for free vertices the 6 axes and 8 diagonals, for boundary vertices the 8 directions
-of the tangent plane (the surface normal comes from `project_on_surface()`), for sharp-edge
-vertices the 2 of the curve's tangent. The worst tetrahedra are those below `selection_angle`
+dihedral angles (measured in the isotropic space of `field`) below a target. A vertex whose star
+has a tetrahedron below `floor_angle` moves by a pattern search with steps of 30%, 10% and 3% of
+the star's mean edge length (lengths in the isotropic space of a tetrahedron of the star) over
+the direction to the star's centroid and the axis and diagonal directions: for free vertices the
+6 axes and 8 diagonals, for boundary vertices the 8 directions of the tangent plane (the surface
+normal comes from `project_on_surface()`), for sharp-edge vertices the 2 of the curve's tangent.
+The others descend along the shortfall's gradient (forward differences of 1% in the space they
+move in; steps of 10%, 3% and 1%; at most 4 times), then take the pattern search's 3% steps. The worst tetrahedra are those below `selection_angle`
 that are not lattice tetrahedra (`edge_length`). Boundary vertices stay on the
 surface and sharp-edge vertices on the feature curves (each candidate is projected back; a
 boundary vertex's candidate only if it scores within a tenth of the best in the tangent plane,
