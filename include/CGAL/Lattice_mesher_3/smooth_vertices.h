@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <iostream>
 #include <vector>
 
@@ -102,21 +103,19 @@ inline std::vector<Eigen::Vector3d> axis_and_diagonal_directions()
   return directions;
 }
 
-// Pattern search from x: steps of 30%, 10% and 3% of `unit` along each direction (only 3% if
-// `fine_only`), each step size repeated while it improves (at most 4 times). `attempt(y, x)`
-// tries the point y; if it takes it, it sets x to where the vertex went and returns true.
+// Pattern search from x: steps of the given fractions of `unit` along each direction, each step
+// size repeated while it improves (at most 4 times). `attempt(y, x)` tries the point y; if it
+// takes it, it sets x to where the vertex went and returns true.
 template <typename Attempt>
 void pattern_search(Eigen::Vector3d x, const std::vector<Eigen::Vector3d>& directions, double unit, Attempt attempt,
-                    bool fine_only = false)
+                    std::initializer_list<double> steps = { .3, .1, .03 })
 {
-  for(double step : { .3, .1, .03 }) {
-    if(fine_only && step > .03) continue;
+  for(double step : steps)
     for(int repeat = 0, improved = 1; improved && repeat < 4; ++repeat) {
       improved = 0;
       for(const Eigen::Vector3d& d : directions)
         if(attempt(Eigen::Vector3d(x + step * unit * d), x)) improved = 1;
     }
-  }
 }
 
 // Descent from x along minus the gradient of `penalty`, by forward differences of 1% of `unit`
@@ -325,7 +324,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     auto penalty = [&](const Eigen::Vector3d& y) { return star_quality(st, Point_3(y[0], y[1], y[2]), HUGE_VAL).penalty; };
     const Eigen::Vector3d descended =
       internal::gradient_descent(x, basis, b, mean_edge, penalty, [&] { return best.penalty; }, attempt);
-    internal::pattern_search(descended, directions, mean_edge, attempt, true);
+    internal::pattern_search(descended, directions, mean_edge, attempt, { .03 });
     return accepted;
   };
 
@@ -393,8 +392,9 @@ the direction to the star's centroid and the axis and diagonal directions: for f
 6 axes and 8 diagonals, for boundary vertices the 8 directions of the tangent plane (the surface
 normal comes from `project_on_surface()`), for sharp-edge vertices the 2 of the curve's tangent.
 The others descend along the shortfall's gradient (forward differences of 1% in the space they
-move in; steps of 10%, 3% and 1%; at most 4 times), then take the pattern search's 3% steps. The worst tetrahedra are those below `selection_angle`
-that are not lattice tetrahedra (`edge_length`). Boundary vertices stay on the
+move in; steps of 10%, 3% and 1%; at most 4 times), then take the pattern search's 3% steps.
+The worst tetrahedra are those below `selection_angle` that are not lattice tetrahedra
+(`edge_length`). Boundary vertices stay on the
 surface and sharp-edge vertices on the feature curves (each candidate is projected back; a
 boundary vertex's candidate only if it scores within a tenth of the best in the tangent plane,
 where most lose by far), fixed
