@@ -106,6 +106,13 @@ double shortfall(const LM::Tetrahedral_mesh_3<Point_3>& mesh, const LM::Constant
   return s;
 }
 
+std::size_t count_below(const LM::Tetrahedral_mesh_3<Point_3>& mesh, const LM::Constant_frame_field_3<Traits>& field, double angle)
+{
+  std::size_t n = 0;
+  for(const auto& q : LM::compute_tetrahedra_quality(mesh, field)) n += q.theta_min < angle;
+  return n;
+}
+
 TEST(Smooth_vertices, LowersTheShortfallRaisesTheWorstAngleAndKeepsVerticesOnTheirConstraints)
 {
   const LM::Constant_frame_field_3<Traits> field;
@@ -140,6 +147,45 @@ TEST(Smooth_vertices, LowersTheShortfallRaisesTheWorstAngleAndKeepsVerticesOnThe
   LM::Tetrahedral_mesh_3<Point_3> single = original;
   LM::smooth_vertices(single, unit_cube(), field, CGAL::parameters::number_of_threads(1));
   EXPECT_EQ(single.points, mesh.points);
+}
+
+// No move takes a tetrahedron of its star below the floor where the star has none below half the
+// floor, and the stars moved together are disjoint: then the count below the floor never grows.
+TEST(Smooth_vertices, TakesNoTetrahedronBelowTheFloor)
+{
+  const LM::Constant_frame_field_3<Traits> field;
+  for(unsigned int seed : { 5u, 6u, 7u }) {
+    LM::Tetrahedral_mesh_3<Point_3> mesh = jittered_mesh(seed);
+    const double floor = (std::min)(40., 1.99 * worst_angle(mesh, field));
+    const std::size_t below = count_below(mesh, field, floor);
+    EXPECT_GT(LM::smooth_vertices(mesh, unit_cube(), field, CGAL::parameters::floor_angle(floor).number_of_threads(2)), 0u);
+    EXPECT_LE(count_below(mesh, field, floor), below) << "seed " << seed << ", floor " << floor;
+  }
+}
+
+// around_vertices(): the first pass searches only the stars that share a tetrahedron with a
+// flagged vertex; with one pass, nothing else moves, and with no flag set, nothing at all.
+TEST(Smooth_vertices, SearchesOnlyAroundTheFlaggedVertices)
+{
+  const LM::Constant_frame_field_3<Traits> field;
+  const LM::Tetrahedral_mesh_3<Point_3> original = jittered_mesh(5);
+  std::vector<bool> flags(original.points.size(), false);
+  LM::Tetrahedral_mesh_3<Point_3> mesh = original;
+  EXPECT_EQ(LM::smooth_vertices(mesh, unit_cube(), field, CGAL::parameters::around_vertices(flags)), 0u);
+  EXPECT_EQ(mesh.points, original.points);
+  // the vertices of the worst tetrahedron
+  const std::vector<LM::Tetrahedron_quality_3> q = LM::compute_tetrahedra_quality(original, field);
+  const std::size_t worst = std::size_t(std::min_element(q.begin(), q.end(), [](const auto& a, const auto& b) { return a.theta_min < b.theta_min; }) - q.begin());
+  std::set<int> near;
+  for(int v : original.tets[worst]) {
+    flags[std::size_t(v)] = true;
+    for(const auto& t : original.tets)
+      if(std::find(t.begin(), t.end(), v) != t.end()) near.insert(t.begin(), t.end());
+  }
+  EXPECT_GT(LM::smooth_vertices(mesh, unit_cube(), field, CGAL::parameters::around_vertices(flags).number_of_passes(1)), 0u);
+  for(std::size_t v = 0; v < mesh.points.size(); ++v)
+    if(mesh.points[v] != original.points[v]) EXPECT_TRUE(near.count(int(v))) << "vertex " << v << " moved";
+  EXPECT_THROW(LM::smooth_vertices(mesh, unit_cube(), field, CGAL::parameters::around_vertices(std::vector<bool>(3, true))), std::invalid_argument);
 }
 
 // The BCC lattice on the unit cube, l* = 1 / n: grid points (corners fixed, edges and faces on

@@ -397,7 +397,8 @@ TEST(Lattice_mesh_3, StagesCalledAloneDoWhatThePipelineDoes)
   ASSERT_EQ(ps.kinds, pipeline.particles().kinds);
 
   // the mesh: the tetrahedralization, flips and two rounds of smoothing (contractions before
-  // the second), the worst tetrahedra alone, contractions on the boundary, and the peeling
+  // the second), the worst tetrahedra alone, a round around the vertices that moved, contractions
+  // on the boundary, and the peeling
   LM::Tetrahedral_mesh_3<Point_3> mesh = LM::tetrahedralize_particles(ps, cube(), field, np);
   LM::flip_tetrahedra(mesh, field, np);
   auto smooth_and_flip = [&](const auto& smoothing) {
@@ -409,7 +410,12 @@ TEST(Lattice_mesh_3, StagesCalledAloneDoWhatThePipelineDoes)
     if(round > 0) LM::collapse_edges(mesh, field);
     if(smooth_and_flip(np) == 0) break;
   }
-  smooth_and_flip(np.selection_angle(40.).worst_angle(45.).worst_weight(50.));
+  const std::vector<Point_3> before = mesh.points;
+  smooth_and_flip(np.selection_angle(40.).worst_angle(41.).worst_weight(200.));
+  std::vector<bool> moved(before.size());
+  for(std::size_t v = 0; v < before.size(); ++v) moved[v] = before[v] != mesh.points[v];
+  EXPECT_GT(std::count(moved.begin(), moved.end(), true), 0);
+  smooth_and_flip(np.around_vertices(moved));
   LM::collapse_edges(mesh, field, CGAL::parameters::boundary_angle(20.));
   LM::peel_boundary_slivers(mesh, field);
 
