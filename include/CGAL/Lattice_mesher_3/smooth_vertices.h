@@ -208,6 +208,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
   // The orientation tests come last: most candidates lose on the penalty first, and an
   // inverted tetrahedron rejects the candidate whatever its penalty.
   struct Score { double penalty, worst; int below; };
+  const Score lost{ HUGE_VAL, -1., 0 };
   auto star_quality = [&](std::vector<Star_tet>& st, const Point_3& at, double bound) {
     Score s{ 0., 180., 0 };
     for(Star_tet& e : st) {
@@ -219,16 +220,16 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
       e.penalty = CGAL::square((std::max)(0., o.target_angle - angle))
                 + o.worst_weight * CGAL::square((std::max)(0., o.worst_angle - angle));
       // the radius ratio's term only adds: a candidate already lost is not measured further
-      if(s.penalty + e.penalty > bound) return Score{ HUGE_VAL, -1., 0 };
+      if(s.penalty + e.penalty > bound) return lost;
       const double rho = internal::radius_ratio_of_faces(n, e.mapped[1] - e.mapped[0], e.mapped[2] - e.mapped[0], e.mapped[3] - e.mapped[0],
                                                          internal::shortest_squared_edge(e.mapped[0], e.mapped[1], e.mapped[2], e.mapped[3]));
       e.penalty += CGAL::square(o.radius_ratio_weight * (std::max)(0., o.target_radius_ratio - rho));
       s.penalty += e.penalty;
-      if(s.penalty > bound) return Score{ HUGE_VAL, -1., 0 };
+      if(s.penalty > bound) return lost;
     }
     for(Star_tet& e : st) {
       e.p[e.k] = at;
-      if(CGAL::orientation(e.p[0], e.p[1], e.p[2], e.p[3]) != CGAL::POSITIVE) return Score{ HUGE_VAL, -1., 0 };
+      if(CGAL::orientation(e.p[0], e.p[1], e.p[2], e.p[3]) != CGAL::POSITIVE) return lost;
     }
     return s;
   };
@@ -343,12 +344,19 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
   std::size_t moves = 0;
   // A vertex whose star did not change since its last search would only search again: after the
   // first pass, only the vertices sharing a tetrahedron with a moved one are candidates.
-  std::vector<char> active(mesh.points.size(), o.around.empty() ? 1 : 0), moved(mesh.points.size(), 0);
+  // around_vertices() stands for the moves of an earlier pass.
+  std::vector<char> active(mesh.points.size(), 1), moved(mesh.points.size(), 0);
+  auto activate_around_moved = [&] {
+    std::fill(active.begin(), active.end(), 0);
+    for(std::size_t v = 0; v < mesh.points.size(); ++v)
+      if(moved[v]) for(int t : star[v]) for(int w : mesh.tets[t]) active[w] = 1;
+    std::fill(moved.begin(), moved.end(), 0);
+  };
   if(!o.around.empty()) {
     if(o.around.size() != mesh.points.size())
       throw std::invalid_argument("smooth_vertices(): around_vertices() needs one flag per vertex");
-    for(std::size_t v = 0; v < mesh.points.size(); ++v)
-      if(o.around[v]) for(int t : star[v]) for(int w : mesh.tets[t]) active[w] = 1;
+    std::copy(o.around.begin(), o.around.end(), moved.begin());
+    activate_around_moved();
   }
   for(int pass = 0; pass < o.max_passes; ++pass) {
     for(std::size_t t = 0; t < mesh.tets.size(); ++t) {
@@ -383,10 +391,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
         pass_moves += accepted;
       }
     }
-    std::fill(active.begin(), active.end(), 0);
-    for(std::size_t v = 0; v < mesh.points.size(); ++v)
-      if(moved[v]) for(int t : star[v]) for(int w : mesh.tets[t]) active[w] = 1;
-    std::fill(moved.begin(), moved.end(), 0);
+    activate_around_moved();
     moves += pass_moves;
 #ifdef CGAL_LATTICE_MESHER_3_VERBOSE
     std::cerr << "  smoothing pass " << pass << ": " << std::count(selected.begin(), selected.end(), 1)
