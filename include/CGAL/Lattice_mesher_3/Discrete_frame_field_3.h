@@ -23,7 +23,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -205,10 +204,9 @@ private:
     std::vector<int> vertex_tet;
     std::vector<std::array<int, 4> > neighbors;
     std::vector<Eigen::Matrix3d> inverses;
-    // per tetrahedron, reference vertex r and vertex k, the rotation G of the cube that matches
-    // k's frame to r's (R_k G nearest to R_r), as a signed permutation: G(row, i) = +-1 for
-    // code[i] = +-(row + 1); computed once, not at every query
-    typedef std::array<std::int8_t, 3> Cube_rotation_code;
+    // per tetrahedron, reference vertex r and vertex k, the rotation of the cube that matches k's
+    // frame to r's (R_k G nearest to R_r); computed once, not at every query
+    typedef internal::Cube_rotation_code Cube_rotation_code;
     std::vector<std::array<std::array<Cube_rotation_code, 4>, 4> > matches;
     // a grid over the box, with a tetrahedron near each cell's centre (-1 where there is none)
     std::array<int, 3> cells = { 0, 0, 0 };
@@ -268,13 +266,9 @@ private:
         inverses.push_back(inverse.allFinite() ? inverse : Eigen::Matrix3d::Zero());
         std::array<std::array<Cube_rotation_code, 4>, 4> codes;
         for(int r = 0; r < 4; ++r)
-          for(int k = 0; k < 4; ++k) {
-            const Eigen::Matrix3d g = internal::best_cube_rotation(rotations[std::size_t(c[std::size_t(r)])].transpose()
-                                                                   * rotations[std::size_t(c[std::size_t(k)])]);
-            for(int i = 0; i < 3; ++i)
-              for(int row = 0; row < 3; ++row)
-                if(g(row, i) != 0.) codes[std::size_t(r)][std::size_t(k)][std::size_t(i)] = std::int8_t(g(row, i) > 0. ? row + 1 : -row - 1);
-          }
+          for(int k = 0; k < 4; ++k)
+            codes[std::size_t(r)][std::size_t(k)] = internal::best_cube_rotation_code(
+                rotations[std::size_t(c[std::size_t(r)])].transpose() * rotations[std::size_t(c[std::size_t(k)])]);
         matches.push_back(codes);
       }
       std::sort(faces.begin(), faces.end());
@@ -347,18 +341,6 @@ private:
       return near;
     }
 
-    // m G for the rotation G of the cube of `code`: column i of m G is column |code[i]| - 1 of m,
-    // signed
-    static Eigen::Matrix3d times_cube_rotation(const Eigen::Matrix3d& m, const Cube_rotation_code& code)
-    {
-      Eigen::Matrix3d out;
-      for(int i = 0; i < 3; ++i) {
-        const int c = code[std::size_t(i)];
-        out.col(i) = c > 0 ? Eigen::Vector3d(m.col(c - 1)) : Eigen::Vector3d(-m.col(-c - 1));
-      }
-      return out;
-    }
-
     // The frames of tetrahedron t matched to that of largest weight, blended with the weights w.
     Matrix_3 interpolate(int t, const Eigen::Vector4d& w) const
     {
@@ -371,10 +353,10 @@ private:
       for(int k = 0; k < 4; ++k) {
         if(w[k] == 0.) continue;
         const std::size_t v = std::size_t(c[std::size_t(k)]);
-        r.noalias() += w[k] * times_cube_rotation(rotations[v], code[std::size_t(k)]);
+        r.noalias() += w[k] * internal::times_cube_rotation(rotations[v], code[std::size_t(k)]);
         if(scalar_stretches) size += w[k] * stretches[v](0, 0);
         else {
-          const Eigen::Matrix3d g = times_cube_rotation(Eigen::Matrix3d::Identity(), code[std::size_t(k)]);
+          const Eigen::Matrix3d g = internal::cube_rotation_matrix(code[std::size_t(k)]);
           s += w[k] * g.transpose() * stretches[v] * g;
         }
       }

@@ -446,15 +446,12 @@ template <typename Point_3, typename Domain, typename Size>
 Boundary_distances_3 boundary_distances(const Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain, double spacing,
                                         const Size& size)
 {
-  typedef typename CGAL::Kernel_traits<Point_3>::Kernel K;
-  typedef typename K::Triangle_3 Triangle_3;
-  typedef std::vector<Triangle_3> Triangles;
-  // The distances to the mesh in double arithmetic: the surface samples often lie in the plane of
-  // a boundary face (CAD models), where the filtered sphere-box tests of the tree's traversal fell
+  // The boundary triangles in double arithmetic: the surface samples often lie in the plane of a
+  // boundary face (CAD models), where the filtered sphere-box tests of the tree's traversal fell
   // back to exact arithmetic (anchor at 15,000 vertices: a quarter of the time of the check).
   typedef CGAL::Simple_cartesian<double> DK;
-  typedef std::vector<typename DK::Triangle_3> Double_triangles;
-  typedef CGAL::AABB_triangle_primitive<DK, typename Double_triangles::const_iterator> Primitive;
+  typedef std::vector<typename DK::Triangle_3> Triangles;
+  typedef CGAL::AABB_triangle_primitive<DK, typename Triangles::const_iterator> Primitive;
   typedef CGAL::AABB_tree<CGAL::AABB_traits<DK, Primitive> > Tree;
   auto to_double = [](const Point_3& p) { return typename DK::Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); };
 
@@ -466,7 +463,7 @@ Boundary_distances_3 boundary_distances(const Tetrahedral_mesh_3<Point_3>& mesh,
   Triangles triangles;
   triangles.reserve(mesh.boundary_faces.size());
   for(const std::array<int, 3>& f : mesh.boundary_faces)
-    triangles.emplace_back(mesh.points[f[0]], mesh.points[f[1]], mesh.points[f[2]]);
+    triangles.emplace_back(to_double(mesh.points[f[0]]), to_double(mesh.points[f[1]]), to_double(mesh.points[f[2]]));
   // mesh -> surface: a barycentric grid of n x n sub-triangles per face, n set by its longest edge
   std::vector<Boundary_distances_3> mesh_to_surface(triangles.size());
   internal::parallel_for_rethrow(triangles.size(), [&](std::size_t f) {
@@ -489,10 +486,7 @@ Boundary_distances_3 boundary_distances(const Tetrahedral_mesh_3<Point_3>& mesh,
   // surface -> mesh; the tree's search structures are built before the concurrent queries
   std::vector<Point_3> samples;
   domain.sample_surface(spacing, std::back_inserter(samples));
-  Double_triangles double_triangles;
-  double_triangles.reserve(triangles.size());
-  for(const Triangle_3& t : triangles) double_triangles.emplace_back(to_double(t[0]), to_double(t[1]), to_double(t[2]));
-  Tree tree(double_triangles.cbegin(), double_triangles.cend());
+  Tree tree(triangles.cbegin(), triangles.cend());
   tree.build();
   tree.accelerate_distance_queries();
   std::vector<Boundary_distances_3> surface_to_mesh(samples.size());

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 namespace CGAL {
 namespace Lattice_mesher_3 {
@@ -227,24 +228,47 @@ inline Eigen::Matrix3d frame_rotation_of_axes(Eigen::Matrix3d m)
   return rotation_factor(m);
 }
 
+// A rotation of the cube as a signed permutation: column i of the matrix is the unit vector
+// e_(|code[i]| - 1), with the sign of code[i].
+typedef std::array<std::int8_t, 3> Cube_rotation_code;
+
+inline Eigen::Matrix3d cube_rotation_matrix(const Cube_rotation_code& code)
+{
+  Eigen::Matrix3d g = Eigen::Matrix3d::Zero();
+  for(int i = 0; i < 3; ++i) g(std::abs(code[std::size_t(i)]) - 1, i) = code[std::size_t(i)] > 0 ? 1. : -1.;
+  return g;
+}
+
+// m G for the rotation G of `code`, without the product: column i of m G is column
+// |code[i]| - 1 of m, signed.
+inline Eigen::Matrix3d times_cube_rotation(const Eigen::Matrix3d& m, const Cube_rotation_code& code)
+{
+  Eigen::Matrix3d out;
+  for(int i = 0; i < 3; ++i) {
+    const int c = code[std::size_t(i)];
+    out.col(i) = c > 0 ? Eigen::Vector3d(m.col(c - 1)) : Eigen::Vector3d(-m.col(-c - 1));
+  }
+  return out;
+}
+
 // The rotation P among the 24 of the cube that maximizes trace(m P): for m = A^T B with A, B
 // rotations, B P is the representative of B's frame nearest to A. For each permutation of the
 // columns, the signs that match the entries, one flipped (the smallest entry) if the
 // determinant would be -1.
-inline Eigen::Matrix3d best_cube_rotation(const Eigen::Matrix3d& m)
+inline Cube_rotation_code best_cube_rotation_code(const Eigen::Matrix3d& m)
 {
   static const int permutations[6][3] = { {0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2} };
   double best = -HUGE_VAL;
-  Eigen::Matrix3d result = Eigen::Matrix3d::Identity();
+  Cube_rotation_code result = { 1, 2, 3 };
   for(int k = 0; k < 6; ++k) {
     const int* s = permutations[k];
     // P(s[i], i) = sign_i: trace(m P) = sum_i sign_i m(i, s[i])
     double value = 0., smallest = HUGE_VAL;
     int negative = k < 3 ? 0 : 1, weakest = 0;   // odd permutations need an odd number of minus signs
-    std::array<double, 3> sign;
+    std::array<int, 3> sign;
     for(int i = 0; i < 3; ++i) {
       const double e = m(i, s[i]);
-      sign[std::size_t(i)] = e < 0. ? -1. : 1.;
+      sign[std::size_t(i)] = e < 0. ? -1 : 1;
       negative += e < 0. ? 1 : 0;
       value += std::abs(e);
       if(std::abs(e) < smallest) { smallest = std::abs(e); weakest = i; }
@@ -252,12 +276,13 @@ inline Eigen::Matrix3d best_cube_rotation(const Eigen::Matrix3d& m)
     if(negative % 2 == 1) { sign[std::size_t(weakest)] = -sign[std::size_t(weakest)]; value -= 2. * smallest; }
     if(value > best) {
       best = value;
-      result.setZero();
-      for(int i = 0; i < 3; ++i) result(s[i], i) = sign[std::size_t(i)];
+      for(int i = 0; i < 3; ++i) result[std::size_t(i)] = std::int8_t(sign[std::size_t(i)] * (s[i] + 1));
     }
   }
   return result;
 }
+
+inline Eigen::Matrix3d best_cube_rotation(const Eigen::Matrix3d& m) { return cube_rotation_matrix(best_cube_rotation_code(m)); }
 
 } // namespace internal
 } // namespace Lattice_mesher_3
