@@ -461,17 +461,36 @@ public:
     Lattice_mesher_3::internal::Smoothing_options so;
     so.threads = p_.threads;
     Lattice_mesher_3::internal::set_lattice_to_keep(so, lattice_, p_.edge_length);
-    // The extra vertices of lattice defects are removed once the first round has done what
-    // moves could (before it, contractions take vertices the smoothing would have placed well).
+    // Whether the mesh is as the last flips left it but for the vertices moved since: then the
+    // next flips try only the tetrahedra around these, the others would fail again (the same
+    // flips as over the whole mesh: Design chapter, Speed).
+    bool flipped = p_.flip;
+    // returns which vertices moved
     auto smooth_and_flip = [&](const Lattice_mesher_3::internal::Smoothing_options& options) {
+      const std::vector<Point_3> before = mesh.points;
       const std::size_t moves = Lattice_mesher_3::internal::smooth_vertices(mesh, domain_, field_, options);
       stage("smoothing");
-      if(moves > 0 && p_.flip) { Lattice_mesher_3::internal::flip_tetrahedra(mesh, field_, Lattice_mesher_3::internal::Flip_options()); stage("flips"); }
-      return moves;
+      std::vector<bool> moved(before.size());
+      for(std::size_t v = 0; v < before.size(); ++v) moved[v] = before[v] != mesh.points[v];
+      if(moves > 0 && p_.flip) {
+        Lattice_mesher_3::internal::Flip_options angle;
+        if(flipped) angle.around = moved;
+        Lattice_mesher_3::internal::flip_tetrahedra(mesh, field_, angle);
+        flipped = true;
+        stage("flips");
+      }
+      return moved;
     };
+    auto any = [](const std::vector<bool>& flags) { return std::find(flags.begin(), flags.end(), true) != flags.end(); };
+    // The extra vertices of lattice defects are removed once the first round has done what
+    // moves could (before it, contractions take vertices the smoothing would have placed well).
     for(int round = 0; round < p_.smoothing_rounds; ++round) {
-      if(round > 0) { Lattice_mesher_3::internal::collapse_edges(mesh, field_, Lattice_mesher_3::internal::Collapse_options()); stage("contractions"); }
-      if(smooth_and_flip(so) == 0) break;
+      if(round > 0) {
+        Lattice_mesher_3::internal::collapse_edges(mesh, field_, Lattice_mesher_3::internal::Collapse_options());
+        flipped = false;
+        stage("contractions");
+      }
+      if(!any(smooth_and_flip(so))) break;
     }
     if(p_.smoothing_rounds > 0) {
       // Last, the tetrahedra below the floor alone, their shortfall below 41 degrees weighing 200
@@ -481,11 +500,8 @@ public:
       worst.select_angle = worst.floor_angle;
       worst.worst_angle = 41.;
       worst.worst_weight = 200.;
-      const std::vector<Point_3> before = mesh.points;
-      smooth_and_flip(worst);
       Lattice_mesher_3::internal::Smoothing_options around = so;
-      around.around.resize(before.size());
-      for(std::size_t v = 0; v < before.size(); ++v) around.around[v] = before[v] != mesh.points[v];
+      around.around = smooth_and_flip(worst);
       smooth_and_flip(around);
       // ... and the slivers of short boundary edges, which the surface holds
       Lattice_mesher_3::internal::Collapse_options co;

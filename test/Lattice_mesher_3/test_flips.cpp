@@ -97,6 +97,32 @@ TEST(Flip_tetrahedra, ValidBoundaryKeptWorstAngleNotLowered)
   }
 }
 
+// around_vertices(): after a flipping, with some vertices moved since, flipping around them
+// does what flipping the whole mesh does; with no vertex flagged, nothing.
+TEST(Flip_tetrahedra, AroundMovedVerticesAsOverTheWholeMesh)
+{
+  const LM::Constant_frame_field_3<Traits> field;
+  for(unsigned int seed : { 1u, 2u, 3u }) {
+    LM::Tetrahedral_mesh_3<Point_3> mesh = jittered_mesh(seed);
+    LM::flip_tetrahedra(mesh, field);
+    LM::Tetrahedral_mesh_3<Point_3> same = mesh;
+    EXPECT_EQ(LM::flip_tetrahedra(same, field, CGAL::parameters::around_vertices(std::vector<bool>(mesh.points.size(), false))).total(), 0u);
+    EXPECT_EQ(same.tets, mesh.tets);
+    // the smoothing moves vertices of the worst tetrahedra; then both flip
+    const LM::Tetrahedral_mesh_3<Point_3> flipped = mesh;
+    ASSERT_GT(LM::smooth_vertices(mesh, unit_cube(), field, CGAL::parameters::number_of_passes(1)), 0u);
+    std::vector<bool> moved(mesh.points.size());
+    for(std::size_t v = 0; v < moved.size(); ++v) moved[v] = mesh.points[v] != flipped.points[v];
+    LM::Tetrahedral_mesh_3<Point_3> around = mesh;
+    const LM::Flip_result whole = LM::flip_tetrahedra(mesh, field);
+    EXPECT_GT(whole.total(), 0u) << "seed " << seed << ": nothing to flip after the moves";
+    EXPECT_EQ(LM::flip_tetrahedra(around, field, CGAL::parameters::around_vertices(moved)).total(), whole.total());
+    EXPECT_EQ(around.tets, mesh.tets) << "seed " << seed;
+  }
+  LM::Tetrahedral_mesh_3<Point_3> mesh = jittered_mesh(1);
+  EXPECT_THROW(LM::flip_tetrahedra(mesh, field, CGAL::parameters::around_vertices(std::vector<bool>(3, true))), std::invalid_argument);
+}
+
 // what the smoothing lowers: the squared shortfall of the smallest angles below the target
 double shortfall(const LM::Tetrahedral_mesh_3<Point_3>& mesh, const LM::Constant_frame_field_3<Traits>& field,
                  double target)

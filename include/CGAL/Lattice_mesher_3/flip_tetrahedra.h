@@ -57,6 +57,10 @@ struct Flip_options
   /// Edges with more incident tetrahedra than this are not removed (the ring's triangulations grow
   /// as the Catalan numbers; past 7 a removal almost never improves the worst tetrahedron).
   int max_ring_size = 7;
+  /// One flag per vertex, or empty: then only the tetrahedra with a vertex that shares a
+  /// tetrahedron with a flagged one are tried, the others once a flip changes a tetrahedron
+  /// around them (an earlier flipping left them as they are, and only the flagged vertices moved).
+  std::vector<bool> around;
 };
 
 template <typename NamedParameters>
@@ -70,6 +74,7 @@ Flip_options flip_options(const NamedParameters& np)
   read_parameter(np, internal_np::boundary_flatness, o.boundary_flatness);
   read_parameter(np, internal_np::number_of_passes, o.max_passes);
   read_parameter(np, internal_np::maximum_ring_size, o.max_ring_size);
+  read_parameter(np, internal_np::around_vertices, o.around);
   if(!(o.shape_tolerance >= 0.) || !(o.boundary_flatness >= 0.))
     throw std::invalid_argument("flip_tetrahedra(): shape_tolerance() and boundary_flatness() must be at least 0");
   if(o.max_passes < 0 || o.max_ring_size < 3)
@@ -129,11 +134,22 @@ public:
   Flip_mesh(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& field, const Flip_options& o)
     : mesh_(mesh), field_(field), o_(o), changed_(mesh.points.size(), 0), incident_(mesh.points.size())
   {
-    // An inverted tetrahedron (only given ones: flips create none, so measure() need not look)
-    // measures -1 degree and a huge shape energy: both criteria take any flip that removes it.
-    for(const std::array<int, 4>& t : mesh.tets)
-      add(t, orientation(t[0], t[1], t[2], t[3]) == CGAL::POSITIVE ? measure(t) : Flip_measure{ -1., 1e6 });
+    for(const std::array<int, 4>& t : mesh.tets) add(t, unmeasured());
   }
+
+  // A given tetrahedron is measured when first looked at (with `around`, most are not). An
+  // inverted one (only given ones: flips create none, so measure() need not look) measures -1
+  // degree and a huge shape energy: both criteria take any flip that removes it.
+  const Flip_measure& measured(int t) const
+  {
+    Flip_measure& m = measure_[t];
+    if(std::isnan(m.angle)) {
+      const std::array<int, 4>& v = tets_[t];
+      m = orientation(v[0], v[1], v[2], v[3]) == CGAL::POSITIVE ? measure(v) : Flip_measure{ -1., 1e6 };
+    }
+    return m;
+  }
+  static Flip_measure unmeasured() { return { std::nan(""), 0. }; }
 
   // either orientation: the angles are unsigned (edge removal measures its b side reversed)
   Flip_measure measure(const std::array<int, 4>& t) const
@@ -161,7 +177,7 @@ public:
   bool try_replace(const Tet_list& old, std::vector<std::array<int, 4> >& created, Criterion c)
   {
     double before = 180., after = 180., shape_before = 0., shape_after = 0.;
-    for(int t : old) { before = (std::min)(before, measure_[t].angle); shape_before += measure_[t].shape; }
+    for(int t : old) { before = (std::min)(before, measured(t).angle); shape_before += measured(t).shape; }
     const double floor = c == ANGLE ? before + 1e-9 : (std::min)(before, o_.floor_angle);
     std::vector<Flip_measure> m(created.size());
     for(std::size_t k = 0; k < created.size(); ++k) {
@@ -189,8 +205,20 @@ public:
     return tried_[t] < (std::max)({ changed_[v[0]], changed_[v[1]], changed_[v[2]], changed_[v[3]] });
   }
   void mark_tried(int t) { tried_[t] = clock_; }
-  // a new criterion: every tetrahedron is worth trying again
-  void forget_tries() { std::fill(tried_.begin(), tried_.end(), -1); }
+  // a new criterion: every tetrahedron is worth trying again, or, with `around` (one flag per
+  // vertex), only those with a vertex sharing a tetrahedron with a flagged one or changed by a
+  // flip, and the others once a flip changes a tetrahedron around them
+  void forget_tries(const std::vector<bool>& around)
+  {
+    std::fill(tried_.begin(), tried_.end(), -1);
+    if(around.empty()) return;
+    std::vector<char> active(mesh_.points.size(), 0);
+    for(std::size_t v = 0; v < around.size(); ++v)
+      if(around[v]) for(int t : incident_[v]) if(alive_[t]) for(int w : tets_[t]) active[w] = 1;
+    for(std::size_t t = 0; t < tets_.size(); ++t)
+      if(alive_[t] && std::none_of(tets_[t].begin(), tets_[t].end(), [&](int v) { return active[v] != 0 || changed_[v] > 0; }))
+        tried_[t] = clock_;
+  }
 
   // 2-3 flip of the face (a, b, c) shared by two tetrahedra
   bool flip23(const std::array<int, 3>& f, Criterion c)
@@ -306,18 +334,23 @@ public:
     std::sort(mesh_.boundary_faces.begin(), mesh_.boundary_faces.end());
   }
 
-  // the tetrahedra worth trying: below the angle (ANGLE) or above the shape tolerance (SHAPE)
+  // the tetrahedra to try: below the angle (ANGLE) or above the shape tolerance (SHAPE)
+  bool candidate(int t, Criterion c) const
+  {
+    return c == ANGLE ? measured(t).angle < o_.target_angle : measured(t).shape > o_.shape_tolerance;
+  }
+  // those that may be: the candidates and the tetrahedra not measured yet
   std::vector<int> candidates(Criterion c) const
   {
     std::vector<int> out;
     for(std::size_t t = 0; t < tets_.size(); ++t)
-      if(alive_[t] && (c == ANGLE ? measure_[t].angle < o_.target_angle : measure_[t].shape > o_.shape_tolerance))
+      if(alive_[t] && (std::isnan(measure_[t].angle) || candidate(int(t), c)))
         out.push_back(int(t));
     return out;
   }
   bool alive(int t) const { return alive_[t] != 0; }
-  bool inverted(int t) const { return measure_[t].angle < 0.; }
-  double angle(int t) const { return measure_[t].angle; }   // smallest dihedral, isotropic
+  bool inverted(int t) const { return measured(t).angle < 0.; }
+  double angle(int t) const { return measured(t).angle; }   // smallest dihedral, isotropic
   const std::array<int, 4>& tet(int t) const { return tets_[t]; }
 
 private:
@@ -441,7 +474,7 @@ private:
   const FrameField& field_;
   const Flip_options& o_;
   std::vector<std::array<int, 4> > tets_;
-  std::vector<Flip_measure> measure_;
+  mutable std::vector<Flip_measure> measure_;
   std::vector<char> alive_;
   // flips done so far; per vertex the flip that last changed its tetrahedra; per tetrahedron the
   // clock of its last unsuccessful try (-1: none)
@@ -463,13 +496,15 @@ Flip_result flip_tetrahedra(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField&
   typedef internal::Flip_mesh<Point_3, FrameField> Flip_mesh;
   // an inverted tetrahedron's boundary faces: within 1 degree (sine) of one plane
   const double folded_flatness = 0.0175;
+  if(!o.around.empty() && o.around.size() != mesh.points.size())
+    throw std::invalid_argument("flip_tetrahedra(): around_vertices() needs one flag per vertex");
   Flip_mesh fm(mesh, field, o);
   Flip_result result;
   auto run = [&](typename Flip_mesh::Criterion c) {
     for(int pass = 0; pass < o.max_passes; ++pass) {
       const std::size_t before = result.total();
       for(int t : fm.candidates(c)) {
-        if(!fm.alive(t) || !fm.worth_trying(t)) continue;
+        if(!fm.alive(t) || !fm.worth_trying(t) || !fm.candidate(t, c)) continue;
         const std::array<int, 4> v = fm.tet(t);
         bool done = false;
         for(int i = 0; i < 4 && !done; ++i)
@@ -492,8 +527,8 @@ Flip_result flip_tetrahedra(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField&
       if(result.total() == before) break;
     }
   };
-  if(fm.has_shape()) run(Flip_mesh::SHAPE);
-  fm.forget_tries();
+  if(fm.has_shape()) { fm.forget_tries(o.around); run(Flip_mesh::SHAPE); }
+  fm.forget_tries(o.around);
   run(Flip_mesh::ANGLE);
   fm.commit();
   return result;
@@ -558,6 +593,11 @@ within 1 degree of one plane; `target_angle(0)` does only that.
     \cgalParamDescription{passes over the candidates of each criterion}
     \cgalParamType{int}
     \cgalParamDefault{8}
+  \cgalParamNEnd
+  \cgalParamNBegin{around_vertices}
+    \cgalParamDescription{one flag per vertex of `mesh`: only the tetrahedra with a vertex that shares a tetrahedron with a flagged one are tried, and the others once a flip changes a tetrahedron around them (after an earlier `flip_tetrahedra()` with the same parameters, when only the flagged vertices have moved since: the others would fail again)}
+    \cgalParamType{`std::vector<bool>`}
+    \cgalParamDefault{empty: every tetrahedron}
   \cgalParamNEnd
   \cgalParamNBegin{maximum_ring_size}
     \cgalParamDescription{edges with more incident tetrahedra than this are not removed (the ring's triangulations grow as the Catalan numbers)}

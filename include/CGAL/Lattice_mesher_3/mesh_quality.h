@@ -38,6 +38,10 @@
 #include <utility>
 #include <vector>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace CGAL {
 namespace Lattice_mesher_3 {
 
@@ -106,14 +110,25 @@ inline double angle_degrees(const Eigen::Vector3d& u, const Eigen::Vector3d& v)
 { return degrees_per_radian * std::atan2(u.cross(v).norm(), u.dot(v)); }
 
 
-// Runs f(i) for i in [0, n) on all threads. OpenMP forbids exceptions from leaving the loop, so
-// the one of the lowest index is rethrown afterwards: the same error for any thread count.
+// OpenMP's default number of threads (1 without OpenMP)
+inline int default_number_of_threads()
+{
+#ifdef _OPENMP
+  return omp_get_max_threads();
+#else
+  return 1;
+#endif
+}
+
+// Runs f(i) for i in [0, n) on `threads` threads (OpenMP's default: all). OpenMP forbids
+// exceptions from leaving the loop, so the one of the lowest index is rethrown afterwards: the
+// same error for any thread count.
 template <typename F>
-void parallel_for_rethrow(std::size_t n, const F& f)
+void parallel_for_rethrow(std::size_t n, const F& f, int threads = default_number_of_threads())
 {
   std::exception_ptr error;
   std::ptrdiff_t error_index = std::ptrdiff_t(n);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for num_threads(threads) schedule(static)
   for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i) {
     try {
       f(std::size_t(i));

@@ -359,14 +359,16 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     activate_around_moved();
   }
   for(int pass = 0; pass < o.max_passes; ++pass) {
-    for(std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    std::vector<char> selected_tets(mesh.tets.size());
+    internal::parallel_for_rethrow(mesh.tets.size(), [&](std::size_t t) {
       Eigen::Vector3d c = Eigen::Vector3d::Zero();
       for(int v : mesh.tets[t]) c += .25 * internal::to_eigen(mesh.points[v]);
       maps[t] = internal::isotropic_map_at<Point_3>(field, c);
-    }
+      selected_tets[t] = selected_tet(t);
+    }, o.threads);
     std::vector<char> selected(mesh.points.size(), 0);
     for(std::size_t t = 0; t < mesh.tets.size(); ++t)
-      if(selected_tet(t))
+      if(selected_tets[t])
         for(int v : mesh.tets[t]) selected[v] = active[v] && mesh.vertex_kinds[v] != Particle_kind::FIXED;
     // Greedy colouring: vertices of one colour share no tetrahedron, so their stars are moved in
     // parallel with the same result for any number of threads.
