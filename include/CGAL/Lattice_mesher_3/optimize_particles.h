@@ -131,7 +131,8 @@ public:
         // B = B_ij + sum_a S_a (m - m_ij)_a, m the midpoint (just B_ij without slopes)
         Mat3 B = graph_.pair_map[p];
         std::array<Mat3, 3> S;
-        if(!slopes.empty()) {
+        const bool sloped = !slopes.empty() && graph_.sloped_pairs[p];
+        if(sloped) {
           const Vec3 shift = .5 * ((x_[i] - origin_[i]) + (x_[j] - origin_[j]));
           for(int a = 0; a < 3; ++a) {
             S[a] = .5 * (slopes[i][a] + slopes[j][a]);
@@ -142,7 +143,8 @@ public:
         pair_energy_[p] = kernel_.energy_and_force(B * d, f);
         pair_gradient_[p] = -(B.transpose() * f);   // dE_ij/dX_i, and minus dE_ij/dX_j ...
         // ... but for the share of B's motion they have in common: half of g . S_a d, g = -f
-        if(!slopes.empty()) for(int a = 0; a < 3; ++a) pair_shared_[p][a] = -.5 * f.dot(S[a] * d);
+        if(sloped) for(int a = 0; a < 3; ++a) pair_shared_[p][a] = -.5 * f.dot(S[a] * d);
+        else if(!slopes.empty()) pair_shared_[p].setZero();
       }
 #pragma omp for schedule(static)
       for(std::ptrdiff_t i = 0; i < n; ++i) {

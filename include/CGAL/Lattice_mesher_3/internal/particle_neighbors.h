@@ -168,6 +168,9 @@ struct Neighbor_graph
   // B_ij + sum_a S_a (m - m_ij)_a, S the mean of its particles' slopes and m its moving midpoint
   // (`estimate_map_slopes()`); empty: B frozen.
   std::vector<std::array<Mat3, 3> > map_slopes;
+  // per pair, with map_slopes: whether one of its particles has a slope (where the field is the
+  // same around both, B_ij stays as it is)
+  std::vector<char> sloped_pairs;
 
   std::size_t number_of_particles() const { return offsets.empty() ? 0 : offsets.size() - 1; }
 };
@@ -276,6 +279,9 @@ inline void estimate_map_slopes(Neighbor_graph& g, const std::vector<Vec3>& x, c
     const Eigen::Matrix<double, 3, 9> slope = a.ldlt().solve(r);
     for(int k = 0; k < 3; ++k) s[k] = Eigen::Map<const Mat3>(slope.row(k).eval().data());
   }
+  auto flat = [&](int i) { return std::all_of(g.map_slopes[i].begin(), g.map_slopes[i].end(), [](const Mat3& m) { return m.isZero(0.); }); };
+  g.sloped_pairs.resize(g.pairs.size());
+  for(std::size_t p = 0; p < g.pairs.size(); ++p) g.sloped_pairs[p] = !flat(g.pairs[p][0]) || !flat(g.pairs[p][1]);
 }
 
 // Uniform hash grid for a growing point set (the insertion's accepted candidates), where a
