@@ -92,6 +92,18 @@ void remove_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const std::vector<char>&
     for(int& v : f) v = index[v];
 }
 
+// The vertices of the tetrahedra that hold a flagged vertex (flagged[v] true), the flagged ones
+// included: those whose star changes when the flagged ones move.
+template <typename Flags>
+std::vector<char> vertices_around(const std::vector<std::array<int, 4> >& tets, const Flags& flagged)
+{
+  std::vector<char> around(flagged.size(), 0);
+  for(const std::array<int, 4>& t : tets)
+    if(flagged[t[0]] || flagged[t[1]] || flagged[t[2]] || flagged[t[3]])
+      for(int v : t) around[v] = 1;
+  return around;
+}
+
 } // namespace internal
 
 } // namespace Lattice_mesher_3

@@ -136,6 +136,7 @@ public:
     : mesh_(mesh), field_(field), o_(o), changed_(mesh.points.size(), 0), incident_(mesh.points.size())
   {
     for(const std::array<int, 4>& t : mesh.tets) add(t, unmeasured());
+    if(!o.around.empty()) around_ = vertices_around(mesh.tets, o.around);
   }
 
   // A given tetrahedron is measured when first looked at (with `around`, most are not). An
@@ -206,19 +207,17 @@ public:
     return tried_[t] < (std::max)({ changed_[v[0]], changed_[v[1]], changed_[v[2]], changed_[v[3]] });
   }
   void mark_tried(int t) { tried_[t] = clock_; }
-  // a new criterion: every tetrahedron is worth trying again, or, with `around` (one flag per
-  // vertex), only those with a vertex sharing a tetrahedron with a flagged one or changed by a
-  // flip, and the others once a flip changes a tetrahedron around them
-  void forget_tries(const std::vector<bool>& around)
+  // a new criterion: every tetrahedron is worth trying again, or, with `around`, only those
+  // with a vertex around a flagged one or changed by a flip (a tetrahedron that holds a vertex and
+  // a flagged one either was given or was made by a flip), and the others once a flip changes a
+  // tetrahedron around them
+  void forget_tries()
   {
     std::fill(tried_.begin(), tried_.end(), -1);
     failed_removals_.clear();
-    if(around.empty()) return;
-    std::vector<char> active(mesh_.points.size(), 0);
-    for(std::size_t v = 0; v < around.size(); ++v)
-      if(around[v]) for(int t : incident_[v]) if(alive_[t]) for(int w : tets_[t]) active[w] = 1;
+    if(around_.empty()) return;
     for(std::size_t t = 0; t < tets_.size(); ++t)
-      if(alive_[t] && std::none_of(tets_[t].begin(), tets_[t].end(), [&](int v) { return active[v] != 0 || changed_[v] > 0; }))
+      if(alive_[t] && std::none_of(tets_[t].begin(), tets_[t].end(), [&](int v) { return around_[v] != 0 || changed_[v] > 0; }))
         tried_[t] = clock_;
   }
 
@@ -499,6 +498,7 @@ private:
   std::vector<long> changed_, tried_;
   // per edge (a, b), as remove_edge() was asked, the clock of its last unsuccessful removal
   std::unordered_map<std::uint64_t, long> failed_removals_;
+  std::vector<char> around_;   // with Flip_options::around: the vertices around the flagged ones
   std::vector<std::vector<int> > incident_;   // per vertex, its live tetrahedra
   bool boundary_changed_ = false;
 };
@@ -546,8 +546,8 @@ Flip_result flip_tetrahedra(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField&
       if(result.total() == before) break;
     }
   };
-  if(fm.has_shape()) { fm.forget_tries(o.around); run(Flip_mesh::SHAPE); }
-  fm.forget_tries(o.around);
+  if(fm.has_shape()) { fm.forget_tries(); run(Flip_mesh::SHAPE); }
+  fm.forget_tries();
   run(Flip_mesh::ANGLE);
   fm.commit();
   return result;

@@ -108,7 +108,7 @@ public:
                     const std::vector<Vec3>& origin, const std::vector<Mat3>& maps, int threads)
     : graph_(graph), kernel_(kernel), origin_(origin), maps_(maps), threads_(threads),
       x_(origin.size()), pair_energy_(graph.pairs.size()), pair_gradient_(graph.pairs.size()),
-      pair_shared_(graph.map_slopes.empty() ? 0 : graph.pairs.size())
+      pair_shared_(graph.map_slopes.empty() ? 0 : graph.pairs.size(), Vec3::Zero())   // 0 for pairs without slope
   {}
 
   // positions (units of l*) of the variables U
@@ -144,7 +144,6 @@ public:
         pair_gradient_[p] = -(B.transpose() * f);   // dE_ij/dX_i, and minus dE_ij/dX_j ...
         // ... but for the share of B's motion they have in common: half of g . S_a d, g = -f
         if(sloped) for(int a = 0; a < 3; ++a) pair_shared_[p][a] = -.5 * f.dot(S[a] * d);
-        else if(!slopes.empty()) pair_shared_[p].setZero();
       }
 #pragma omp for schedule(static)
       for(std::ptrdiff_t i = 0; i < n; ++i) {

@@ -347,9 +347,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
   // around_vertices() stands for the moves of an earlier pass.
   std::vector<char> active(mesh.points.size(), 1), moved(mesh.points.size(), 0);
   auto activate_around_moved = [&] {
-    std::fill(active.begin(), active.end(), 0);
-    for(std::size_t v = 0; v < mesh.points.size(); ++v)
-      if(moved[v]) for(int t : star[v]) for(int w : mesh.tets[t]) active[w] = 1;
+    active = internal::vertices_around(mesh.tets, moved);
     std::fill(moved.begin(), moved.end(), 0);
   };
   if(!o.around.empty()) {

@@ -259,6 +259,7 @@ inline void estimate_map_slopes(Neighbor_graph& g, const std::vector<Vec3>& x, c
   g.map_slopes.clear();
   if(!varies) return;
   g.map_slopes.resize(n);
+  std::vector<char> sloped(n, 0);
 #pragma omp parallel for num_threads(threads) schedule(static)
   for(std::ptrdiff_t i = 0; i < n; ++i) {
     Mat3 a = Mat3::Zero();
@@ -278,10 +279,10 @@ inline void estimate_map_slopes(Neighbor_graph& g, const std::vector<Vec3>& x, c
     if(!(scale > 0.) || !(a.determinant() > 1e-6 * scale * scale * scale)) continue;
     const Eigen::Matrix<double, 3, 9> slope = a.ldlt().solve(r);
     for(int k = 0; k < 3; ++k) s[k] = Eigen::Map<const Mat3>(slope.row(k).eval().data());
+    sloped[i] = !slope.isZero(0.);
   }
-  auto flat = [&](int i) { return std::all_of(g.map_slopes[i].begin(), g.map_slopes[i].end(), [](const Mat3& m) { return m.isZero(0.); }); };
   g.sloped_pairs.resize(g.pairs.size());
-  for(std::size_t p = 0; p < g.pairs.size(); ++p) g.sloped_pairs[p] = !flat(g.pairs[p][0]) || !flat(g.pairs[p][1]);
+  for(std::size_t p = 0; p < g.pairs.size(); ++p) g.sloped_pairs[p] = sloped[g.pairs[p][0]] || sloped[g.pairs[p][1]];
 }
 
 // Uniform hash grid for a growing point set (the insertion's accepted candidates), where a
