@@ -96,6 +96,8 @@ static const char* usage =
   "                   row by row); any field sampled on a grid of spacing H (--field-spacing) over\n"
   "                   the domain's bounding box, as a text file of samples\n"
   "  --feature-angle  sharp-edge threshold in degrees (default 60)\n"
+  "  --threads        OpenMP threads of every stage, the check and the measures included\n"
+  "                   (default 1); the same seed and number of threads give the same mesh\n"
   "  --size-field     sizes (the largest edge) given at points: a file of lines 'x y z h', or a\n"
   "                   Medit X.mesh whose vertices carry the sizes of X.sol (one scalar a vertex,\n"
   "                   as MMG writes them); the size is the largest function below them that\n"
@@ -441,10 +443,11 @@ static int run(const Domain& domain, const Field_choice& given, const Options& o
 
   const auto checked = std::chrono::steady_clock::now();
   const LM::Mesh_validity_report validity = LM::check_tetrahedral_mesh(mesh);
-  LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, CGAL::parameters::lattice(meshed.lattice));
+  LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, CGAL::parameters::lattice(meshed.lattice).number_of_threads(o.threads));
   // the local size: the longest edge of the lattice cube there, which the sizing shrinks
   const LM::Boundary_distances_3 distances = LM::boundary_distances(mesh, domain, 0.25 * meshed.edge_length,
-      [&](const Point_3& x) { return meshed.edge_length * field.frame(x).colwise().norm().maxCoeff(); });
+      [&](const Point_3& x) { return meshed.edge_length * field.frame(x).colwise().norm().maxCoeff(); },
+      CGAL::parameters::number_of_threads(o.threads));
   times.add("check and quality", std::chrono::duration<double>(std::chrono::steady_clock::now() - checked).count());
   q.hausdorff = distances.hausdorff;
   q.hausdorff_over_size = distances.over_size;
@@ -457,7 +460,7 @@ static int run(const Domain& domain, const Field_choice& given, const Options& o
   // the quality in the isotropic space, per tetrahedron (.vtu and --png), computed once
   std::vector<LM::Tetrahedron_quality_3> tq;
   auto tetrahedra_quality = [&]() -> const std::vector<LM::Tetrahedron_quality_3>& {
-    if(tq.size() != mesh.tets.size()) tq = LM::compute_tetrahedra_quality(mesh, field);
+    if(tq.size() != mesh.tets.size()) tq = LM::compute_tetrahedra_quality(mesh, field, CGAL::parameters::number_of_threads(o.threads));
     return tq;
   };
   auto open = [](const std::string& name) {

@@ -20,10 +20,6 @@
 
 #include <gtest/gtest.h>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -285,12 +281,7 @@ TEST(MeshQuality, SameResultForAnyThreadCount)
   }
   const Rotation_y_frame_field_3<GT> field(.5);
   auto measure = [&](int threads) {
-#ifdef _OPENMP
-    omp_set_num_threads(threads);
-#else
-    (void)threads;
-#endif
-    return compute_mesh_quality(m, field, CGAL::parameters::lattice(fcc_lattice()));
+    return compute_mesh_quality(m, field, CGAL::parameters::lattice(fcc_lattice()).number_of_threads(threads));
   };
   const Mesh_quality_3 a = measure(1), b = measure(2);
   std::ostringstream ja, jb;
@@ -301,6 +292,7 @@ TEST(MeshQuality, SameResultForAnyThreadCount)
   EXPECT_EQ(a.kappa.std, b.kappa.std);
   EXPECT_EQ(a.epsilon.mean, b.epsilon.mean);
   EXPECT_EQ(a.tets, 6u * 216u);
+  EXPECT_THROW(measure(0), std::invalid_argument);
 }
 
 TEST(MeshQuality, JsonHasExactlyTheKeysAndRoundTrips)
@@ -614,6 +606,11 @@ TEST(Hausdorff, RelativeToTheLocalSize)
   // at x = 1.1 on the mesh (size 0.225) and x = 1 on the surface (0.25): the mesh's side counts
   EXPECT_NEAR(shifted.over_size, .1 / .225, 1e-12);
   EXPECT_LT(boundary_distances(cube_mesh(3), cube, 0.05, size).over_size, 1e-12);
+  // on one thread or two, the same
+  const Boundary_distances_3 one = boundary_distances(cube_mesh(3, 1., .1), cube, 0.05, size, CGAL::parameters::number_of_threads(1));
+  EXPECT_EQ(one.hausdorff, shifted.hausdorff);
+  EXPECT_EQ(one.over_size, shifted.over_size);
+  EXPECT_THROW(boundary_distances(cube_mesh(3), cube, 0.05, size, CGAL::parameters::number_of_threads(0)), std::invalid_argument);
 }
 
 } // namespace

@@ -120,6 +120,16 @@ inline int default_number_of_threads()
 #endif
 }
 
+// The threads of a measure: the named parameter number_of_threads, or OpenMP's default.
+template <typename NamedParameters>
+int measure_threads(const NamedParameters& np)
+{
+  const int threads = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_threads),
+                                                   default_number_of_threads());
+  if(threads < 1) throw std::invalid_argument("number_of_threads() must be at least 1");
+  return threads;
+}
+
 // Runs f(i) for i in [0, n) on `threads` threads (OpenMP's default: all). OpenMP forbids
 // exceptions from leaving the loop, so the one of the lowest index is rethrown afterwards: the
 // same error for any thread count.
@@ -353,33 +363,48 @@ inline double edge_alignment_error(const Eigen::Vector3d& e, const Lattice_3& la
 /*!
 \ingroup PkgLatticeMesher3Quality
 Quality of every tetrahedron of `mesh`, mapped to the isotropic space by B = T^-1 at its
-centroid, T = `field.frame(centroid)`. Computed in parallel (OpenMP).
+centroid, T = `field.frame(centroid)`. Computed in parallel (OpenMP), the same for any number of
+threads.
 
 \tparam FrameField a model of `FrameField_3` for points of type `Point_3`
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{OpenMP threads}
+    \cgalParamType{int}
+    \cgalParamDefault{OpenMP's default (all cores)}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
 \throws std::domain_error if the frame at a centroid is singular
+\throws std::invalid_argument if `number_of_threads` is below 1
 */
-template <typename Point_3, typename FrameField>
+template <typename Point_3, typename FrameField,
+          typename NamedParameters = parameters::Default_named_parameters>
 std::vector<Tetrahedron_quality_3> compute_tetrahedra_quality(const Tetrahedral_mesh_3<Point_3>& mesh,
-                                                              const FrameField& field)
+                                                              const FrameField& field,
+                                                              const NamedParameters& np = parameters::default_values())
 {
   std::vector<Tetrahedron_quality_3> quality(mesh.tets.size());
   internal::parallel_for_rethrow(mesh.tets.size(), [&](std::size_t t) {
     const std::array<Eigen::Vector3d, 4> p = internal::isotropic_tetrahedron(mesh, field, t);
     quality[t] = tetrahedron_quality(p[0], p[1], p[2], p[3]);
-  });
+  }, internal::measure_threads(np));
   return quality;
 }
 
 /*!
 \ingroup PkgLatticeMesher3Quality
 Alignment error (degrees) of every unique edge of `mesh`, mapped to the isotropic space by B at
-its midpoint. The edges are taken in lexicographic order of their sorted vertex pairs.
+its midpoint. The edges are taken in lexicographic order of their sorted vertex pairs. The named
+parameter `number_of_threads` is as for `compute_tetrahedra_quality()`.
 
 \throws std::domain_error if the frame at a midpoint is singular
 */
-template <typename Point_3, typename FrameField>
+template <typename Point_3, typename FrameField,
+          typename NamedParameters = parameters::Default_named_parameters>
 std::vector<double> compute_edge_alignment_errors(const Tetrahedral_mesh_3<Point_3>& mesh,
-                                                  const FrameField& field, const Lattice_3& lattice)
+                                                  const FrameField& field, const Lattice_3& lattice,
+                                                  const NamedParameters& np = parameters::default_values())
 {
   const std::vector<std::pair<int, int> > edges = internal::unique_edges(mesh.tets);
   std::vector<double> errors(edges.size());
@@ -388,7 +413,7 @@ std::vector<double> compute_edge_alignment_errors(const Tetrahedral_mesh_3<Point
     const Eigen::Vector3d q = internal::to_eigen(mesh.points[edges[e].second]);
     const Eigen::Matrix3d b = internal::isotropic_map_at<Point_3>(field, .5 * (p + q));
     errors[e] = edge_alignment_error(b * (q - p), lattice);
-  });
+  }, internal::measure_threads(np));
   return errors;
 }
 
@@ -397,8 +422,8 @@ std::vector<double> compute_edge_alignment_errors(const Tetrahedral_mesh_3<Point
 Measures `mesh` in the isotropic space of `field`: the dihedral angles, rho and kappa of every
 tetrahedron (mapped by B at its centroid) and the alignment error epsilon of every edge with
 respect to the one-ring of the named parameter `lattice` (a `Lattice_type` or a `Lattice_3`,
-default BCC; mapped by B at its midpoint). The result is the same for any number of
-threads. `hausdorff` is left negative (see `boundary_hausdorff_distance()`) and `seconds` at 0.
+default BCC; mapped by B at its midpoint), on `number_of_threads` OpenMP threads (as for
+`compute_tetrahedra_quality()`). The result is the same for any number of threads. `hausdorff` is left negative (see `boundary_hausdorff_distance()`) and `seconds` at 0.
 
 \tparam FrameField a model of `FrameField_3` for points of type `Point_3`
 \throws std::domain_error if the frame is singular at a centroid or a midpoint
@@ -413,7 +438,7 @@ Mesh_quality_3 compute_mesh_quality(const Tetrahedral_mesh_3<Point_3>& mesh, con
   result.vertices = mesh.points.size();
   result.tets = mesh.tets.size();
 
-  const std::vector<Tetrahedron_quality_3> quality = compute_tetrahedra_quality(mesh, field);
+  const std::vector<Tetrahedron_quality_3> quality = compute_tetrahedra_quality(mesh, field, np);
   std::vector<double> values(quality.size());
   auto summarize_member = [&](double Tetrahedron_quality_3::*member) {
     for(std::size_t t = 0; t < quality.size(); ++t) values[t] = quality[t].*member;
@@ -427,7 +452,7 @@ Mesh_quality_3 compute_mesh_quality(const Tetrahedral_mesh_3<Point_3>& mesh, con
     if(q.theta_min < 20.) ++result.below20;
     if(q.theta_min < 40.) ++result.below40;
   }
-  result.epsilon = internal::summarize(compute_edge_alignment_errors(mesh, field, lattice));
+  result.epsilon = internal::summarize(compute_edge_alignment_errors(mesh, field, lattice, np));
   return result;
 }
 
@@ -446,7 +471,8 @@ struct Boundary_distances_3
 \ingroup PkgLatticeMesher3Quality
 Symmetric Hausdorff distance between the boundary triangles of `mesh` and the boundary surface
 of `domain`, both sampled at `spacing`, and the same relative to the size the mesh was made
-for: the largest of
+for, on `number_of_threads` OpenMP threads (a named parameter, as for
+`compute_tetrahedra_quality()`): the largest of
 - the distance to the surface (`domain.project_on_surface()`) of the boundary vertices and of
   points at most `spacing` apart on every boundary triangle, and
 - the distance to the boundary triangles of the points of `domain.sample_surface(spacing)`;
@@ -457,9 +483,10 @@ length: a graded mesh is held to its own size, a thin part to the size it was gi
 \tparam Size a callable `double(const Point_3&)`, positive, thread-safe
 \throws std::invalid_argument if `spacing` is not positive or the mesh has no boundary face
 */
-template <typename Point_3, typename Domain, typename Size>
+template <typename Point_3, typename Domain, typename Size,
+          typename NamedParameters = parameters::Default_named_parameters>
 Boundary_distances_3 boundary_distances(const Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain, double spacing,
-                                        const Size& size)
+                                        const Size& size, const NamedParameters& np = parameters::default_values())
 {
   // The boundary triangles in double arithmetic: the surface samples often lie in the plane of a
   // boundary face (CAD models), where the filtered sphere-box tests of the tree's traversal fell
@@ -474,6 +501,7 @@ Boundary_distances_3 boundary_distances(const Tetrahedral_mesh_3<Point_3>& mesh,
     throw std::invalid_argument("boundary_distances(): the sampling spacing must be positive");
   if(mesh.boundary_faces.empty())
     throw std::invalid_argument("boundary_distances(): the mesh has no boundary face");
+  const int threads = internal::measure_threads(np);
 
   Triangles triangles;
   triangles.reserve(mesh.boundary_faces.size());
@@ -496,7 +524,7 @@ Boundary_distances_3 boundary_distances(const Tetrahedral_mesh_3<Point_3>& mesh,
         r.hausdorff = (std::max)(r.hausdorff, d);
         r.over_size = (std::max)(r.over_size, d / size(p));
       }
-  });
+  }, threads);
 
   // surface -> mesh; the tree's search structures are built before the concurrent queries
   std::vector<Point_3> samples;
@@ -508,7 +536,7 @@ Boundary_distances_3 boundary_distances(const Tetrahedral_mesh_3<Point_3>& mesh,
   internal::parallel_for_rethrow(samples.size(), [&](std::size_t s) {
     const double d = std::sqrt(tree.squared_distance(to_double(samples[s])));
     surface_to_mesh[s] = { d, d / size(samples[s]) };
-  });
+  }, threads);
 
   Boundary_distances_3 result;
   for(const std::vector<Boundary_distances_3>* part : { &mesh_to_surface, &surface_to_mesh })
@@ -521,13 +549,14 @@ Boundary_distances_3 boundary_distances(const Tetrahedral_mesh_3<Point_3>& mesh,
 
 /*!
 \ingroup PkgLatticeMesher3Quality
-The symmetric Hausdorff distance of `boundary_distances()`.
+The symmetric Hausdorff distance of `boundary_distances()` (with the same named parameters).
 */
-template <typename Point_3, typename Domain>
+template <typename Point_3, typename Domain,
+          typename NamedParameters = parameters::Default_named_parameters>
 double boundary_hausdorff_distance(const Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain,
-                                   double spacing)
+                                   double spacing, const NamedParameters& np = parameters::default_values())
 {
-  return boundary_distances(mesh, domain, spacing, [](const Point_3&) { return 1.; }).hausdorff;
+  return boundary_distances(mesh, domain, spacing, [](const Point_3&) { return 1.; }, np).hausdorff;
 }
 
 namespace internal {
@@ -703,6 +732,7 @@ isotropic space and the same formulas, as CSV histograms with the header `quanti
 `rho` and `kappa` every tetrahedron (bins of 0.01 on [0, 1]) and `epsilon` the alignment error of
 every unique edge with respect to the named parameter `lattice` (as for `compute_mesh_quality()`; degrees, bins of 0.5 on [0, 90]). `value` is the
 centre of a bin; values beyond the last bin are counted in it. Every bin is written, empty or not.
+The named parameter `number_of_threads` is as for `compute_tetrahedra_quality()`.
 
 \tparam FrameField a model of `FrameField_3` for points of type `Point_3`
 \throws std::domain_error if the frame is singular at a centroid or a midpoint
@@ -723,7 +753,7 @@ void write_quality_histograms_csv(std::ostream& os, const Tetrahedral_mesh_3<Poi
     std::copy(angles.begin(), angles.end(), values[t].begin());
     values[t][6] = q.rho;
     values[t][7] = q.kappa;
-  });
+  }, internal::measure_threads(np));
   internal::Quality_histogram dihedral("dihedral", 1., 180.), rho("rho", .01, 1.), kappa("kappa", .01, 1.),
                               epsilon("epsilon", .5, 90.);
   for(const std::array<double, 8>& v : values) {
@@ -731,7 +761,7 @@ void write_quality_histograms_csv(std::ostream& os, const Tetrahedral_mesh_3<Poi
     rho.add(v[6]);
     kappa.add(v[7]);
   }
-  for(double e : compute_edge_alignment_errors(mesh, field, lattice)) epsilon.add(e);
+  for(double e : compute_edge_alignment_errors(mesh, field, lattice, np)) epsilon.add(e);
 
   os << "quantity,value,count\n";
   for(const internal::Quality_histogram* h : { &dihedral, &rho, &kappa, &epsilon }) h->write(os);
