@@ -453,6 +453,7 @@ public:
     Mesh mesh = Lattice_mesher_3::internal::tetrahedralize_particles(particles_, domain_, field_, o, traits_);
     stage("tetrahedralization");
     Lattice_mesher_3::internal::Flip_options fo;
+    fo.threads = p_.threads;
     Lattice_mesher_3::internal::set_lattice_to_keep(fo, lattice_, p_.edge_length);
     if(p_.flip) Lattice_mesher_3::internal::flip_tetrahedra(mesh, field_, fo);
     stage("flips");
@@ -474,6 +475,7 @@ public:
       for(std::size_t v = 0; v < before.size(); ++v) moved[v] = before[v] != mesh.points[v];
       if(moves > 0 && p_.flip) {
         Lattice_mesher_3::internal::Flip_options angle;
+        angle.threads = p_.threads;
         if(flipped) angle.around = moved;
         Lattice_mesher_3::internal::flip_tetrahedra(mesh, field_, angle);
         flipped = true;

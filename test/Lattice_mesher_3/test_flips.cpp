@@ -123,6 +123,32 @@ TEST(Flip_tetrahedra, AroundMovedVerticesAsOverTheWholeMesh)
   EXPECT_THROW(LM::flip_tetrahedra(mesh, field, CGAL::parameters::around_vertices(std::vector<bool>(3, true))), std::invalid_argument);
 }
 
+// Threads look at batches of candidates at once and the flips are made in order, looking again
+// where an earlier flip of the batch changed a tetrahedron around: the flips of one thread.
+TEST(Flip_tetrahedra, TheSameFlipsOnAnyNumberOfThreads)
+{
+  const LM::Constant_frame_field_3<Traits> field;
+  for(unsigned int seed : { 1u, 2u }) {
+    const LM::Tetrahedral_mesh_3<Point_3> mesh = jittered_mesh(seed, 10);
+    for(double l : { 0., .1 }) {   // the angle alone; the lattice's shapes first
+      LM::Tetrahedral_mesh_3<Point_3> one = mesh;
+      const LM::Flip_result r1 = LM::flip_tetrahedra(one, field, CGAL::parameters::edge_length(l).number_of_threads(1));
+      ASSERT_GT(r1.total(), 100u) << "seed " << seed;
+      for(int threads : { 2, 3 }) {
+        LM::Tetrahedral_mesh_3<Point_3> many = mesh;
+        const LM::Flip_result r = LM::flip_tetrahedra(many, field, CGAL::parameters::edge_length(l).number_of_threads(threads));
+        EXPECT_EQ(many.tets, one.tets) << "seed " << seed << ", " << threads << " threads";
+        EXPECT_EQ(many.boundary_faces, one.boundary_faces);
+        EXPECT_EQ(r.flips23, r1.flips23);
+        EXPECT_EQ(r.flips32, r1.flips32);
+        EXPECT_EQ(r.edge_removals, r1.edge_removals);
+      }
+    }
+  }
+  LM::Tetrahedral_mesh_3<Point_3> mesh = jittered_mesh(1);
+  EXPECT_THROW(LM::flip_tetrahedra(mesh, field, CGAL::parameters::number_of_threads(0)), std::invalid_argument);
+}
+
 // what the smoothing lowers: the squared shortfall of the smallest angles below the target
 double shortfall(const LM::Tetrahedral_mesh_3<Point_3>& mesh, const LM::Constant_frame_field_3<Traits>& field,
                  double target)
