@@ -153,7 +153,7 @@ public:
     Tet_list old;
     std::vector<std::array<int, 4> > created;
     std::vector<Flip_measure> measures;
-    std::vector<std::uint64_t> failed;
+    boost::container::small_vector<std::uint64_t, 6> failed;   // at most t's six edges: no allocation
   };
 
   // A given tetrahedron is measured when first looked at (with `around`, most are not); while
@@ -460,7 +460,6 @@ public:
   bool alive(int t) const { return alive_[t] != 0; }
   bool inverted(int t) const { return measured(t).angle < 0.; }
   double angle(int t) const { return measured(t).angle; }   // smallest dihedral, isotropic
-  const std::array<int, 4>& tet(int t) const { return tets_[t]; }
 
 private:
   // the tetrahedra holding the vertices a, b and, if c >= 0, c
