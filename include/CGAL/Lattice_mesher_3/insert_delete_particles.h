@@ -101,10 +101,11 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
   const internal::Point_search_3<K> search(ps.points);
   const double reach = 1.1 * frames.max_stretch;   // Euclidean radius per unit isotropic radius (grids)
 
-  struct Candidate { Point_3 p; Particle_kind kind; int feature; double energy; Mat3 B; bool keep; };
+  // only the candidates that may be accepted are kept (a few percent), each with its index
+  struct Candidate { std::size_t index; Point_3 p; Particle_kind kind; int feature; double energy; Mat3 B; };
   const std::size_t m = offsets.size();
   const std::size_t sources = n - (std::min)(first_source, n);
-  std::vector<Candidate> cand(sources * m);
+  std::vector<Candidate> cand;
   const double block = (std::max)(min_distance, coincidence);
   double offset_radius = 0.;
   for(const Eigen::Vector3d& off : offsets) offset_radius = (std::max)(offset_radius, off.norm());
@@ -120,11 +121,14 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
 #pragma omp parallel num_threads(o.threads)
   {
     std::vector<std::size_t> near, around;
+    std::vector<Candidate> kept;
     std::ptrdiff_t around_of = -1;
-#pragma omp for schedule(static)
+    // a source's candidates inside cost little, on the boundary their projections: chunks of
+    // whole sources, taken as threads free up
+#pragma omp for schedule(dynamic, 32 * (std::max)(int(m), 1))
     for(std::ptrdiff_t c = 0; c < std::ptrdiff_t(sources * m); ++c) {
-      Candidate& cd = cand[c];
-      cd.keep = false;
+      Candidate cd;
+      cd.index = std::size_t(c);
       try {
         const std::size_t i = n - sources + std::size_t(c) / m, k = std::size_t(c) % m;
         // the lattice offset in the frame at the candidate's midpoint with i: under a varying
@@ -184,20 +188,22 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
           e += kernel.energy(v / l);
         }
         cd.energy = e;
-        cd.keep = !blocked;
+        if(!blocked) kept.push_back(cd);
       } catch(const std::exception& ex) {
 #pragma omp critical(lattice_mesher_3_insert)
         { if(!failed) { failed = true; what = ex.what(); } }
       }
     }
+#pragma omp critical(lattice_mesher_3_insert)
+    cand.insert(cand.end(), kept.begin(), kept.end());
   }
   if(failed) throw std::domain_error(what);
+  std::sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.index < b.index; });
 
   // Coincident candidates: keep the first of each 0.1 l* cluster (deterministic order).
   internal::Hash_grid_3 seen(coincidence * reach);
   std::vector<std::size_t> order;
   for(std::size_t c = 0; c < cand.size(); ++c) {
-    if(!cand[c].keep) continue;
     const Vec3 q = internal::to_eigen(cand[c].p);
     bool dup = false;
     seen.for_each_near(q, [&](const Vec3& r, int) { if((cand[c].B * (q - r)).norm() < coincidence) dup = true; });

@@ -221,13 +221,21 @@ Neighbor_graph build_neighbor_graph(const std::vector<Vec3>& x, const Particle_f
   }
   if(failed) throw std::domain_error(what);
 
+  // the pairs in the order of the particles that found them, copied in parallel
   Neighbor_graph g;
-  std::vector<int> degree(n, 0);
-  for(std::size_t i = 0; i < n; ++i)
-    for(const auto& e : kept[i]) {
-      const int a = (std::min)(int(i), e.first), b = (std::max)(int(i), e.first);
-      ++degree[a]; ++degree[b]; g.pairs.push_back({a, b}); g.pair_map.push_back(e.second);
+  std::vector<std::size_t> first(n + 1, 0);
+  for(std::size_t i = 0; i < n; ++i) first[i + 1] = first[i] + kept[i].size();
+  g.pairs.resize(first[n]);
+  g.pair_map.resize(first[n]);
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i)
+    for(std::size_t k = 0; k < kept[i].size(); ++k) {
+      const int j = kept[i][k].first;
+      g.pairs[first[i] + k] = { (std::min)(int(i), j), (std::max)(int(i), j) };
+      g.pair_map[first[i] + k] = kept[i][k].second;
     }
+  std::vector<int> degree(n, 0);
+  for(const std::array<int, 2>& p : g.pairs) { ++degree[p[0]]; ++degree[p[1]]; }
   g.offsets.assign(n + 1, 0);
   for(std::size_t i = 0; i < n; ++i) g.offsets[i + 1] = g.offsets[i] + degree[i];
   g.neighbor.resize(g.offsets[n]);
