@@ -45,6 +45,18 @@ std::size_t delete_particles(Particle_set_3<Point_3>& ps, const Domain& /*domain
   std::iota(order.begin(), order.end(), std::size_t(0));
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return ps.kinds[a] > ps.kinds[b]; });
 
+  // each particle's neighbours by ascending isotropic distance, sorted by all threads: the
+  // deletions, one after the other, only skip those already deleted
+  std::vector<std::pair<double, int> > nearest(graph.neighbor.size());
+#pragma omp parallel for num_threads(o.threads) schedule(static)
+  for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i) {
+    for(int e = graph.offsets[i]; e < graph.offsets[i + 1]; ++e) {
+      const int j = graph.neighbor[e];
+      nearest[e] = { (graph.pair_map[graph.pair_of[e]] * (x[i] - x[j])).norm(), j };
+    }
+    std::sort(nearest.begin() + graph.offsets[i], nearest.begin() + graph.offsets[i + 1]);
+  }
+
   static const int counts[5] = { 1, 2, 4, 6, 8 };
   static const double factors[5] = { 0.5, 0.75, 0.85, 0.9, 0.95 };
   std::vector<char> alive(n, 1);
@@ -53,12 +65,9 @@ std::size_t delete_particles(Particle_set_3<Point_3>& ps, const Domain& /*domain
   for(std::size_t i : order) {
     if(ps.kinds[i] == Particle_kind::FIXED) continue;
     d.clear();
-    for(int e = graph.offsets[i]; e < graph.offsets[i + 1]; ++e) {
-      const int j = graph.neighbor[e];
-      if(alive[j]) d.push_back((graph.pair_map[graph.pair_of[e]] * (x[i] - x[j])).norm());
-    }
-    if(d.size() < 8) d.resize(8, radius);
-    std::partial_sort(d.begin(), d.begin() + 8, d.end());
+    for(int e = graph.offsets[i]; e < graph.offsets[i + 1] && d.size() < 8; ++e)
+      if(alive[nearest[e].second]) d.push_back(nearest[e].first);
+    if(d.size() < 8) d.resize(8, radius);   // (the neighbours are within the radius)
     double sum = 0.;
     int k = 0;
     for(int r = 0; r < 5; ++r) {

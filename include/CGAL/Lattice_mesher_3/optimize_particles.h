@@ -124,7 +124,8 @@ public:
     {
 #pragma omp for schedule(static)
       for(std::ptrdiff_t i = 0; i < n; ++i) x_[i] = position(U, i);
-#pragma omp for schedule(static)
+      // (pairs with a slope cost more, and gather where the size changes)
+#pragma omp for schedule(dynamic, 2048)
       for(std::ptrdiff_t p = 0; p < np; ++p) {
         const int i = graph_.pairs[p][0], j = graph_.pairs[p][1];
         const Vec3 d = x_[i] - x_[j];

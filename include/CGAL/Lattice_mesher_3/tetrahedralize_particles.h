@@ -26,7 +26,6 @@
 #include <array>
 #include <cmath>
 #include <iostream>
-#include <map>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -150,49 +149,91 @@ Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& p
   // so it ends, but where the domain is thin one removal may expose the next (cheese and rotor at
   // 3,000 vertices: more than 20 passes), hence the generous bound.
   auto is_boundary_facet = [](Cell_handle c, int i) { return c->info() != c->neighbor(i)->info(); };
-  for(int pass = 0; pass < 200;) {
-    std::set<Cell_handle> to_remove;
-    std::vector<Cell_handle> ring;
-    for(auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
-      ring.clear();
-      auto cc = dt.incident_cells(*e), done = cc;
-      do { ring.push_back(cc); ++cc; } while(cc != done);
-      int changes = 0;
-      for(std::size_t k = 0; k < ring.size(); ++k) changes += ring[k]->info() != ring[(k + 1) % ring.size()]->info();
-      if(changes > 2)
-        for(Cell_handle c : ring) if(c->info()) to_remove.insert(c);
+  // the cells around v (v's star), by a walk through the faces that hold v: the triangulation's
+  // own incident_cells() marks cells, and the threads share them
+  auto star = [](Vertex_handle v, std::vector<Cell_handle>& cells) {
+    cells.assign(1, v->cell());
+    for(std::size_t k = 0; k < cells.size(); ++k) {
+      const Cell_handle c = cells[k];
+      const int iv = c->index(v);
+      for(int i = 0; i < 4; ++i) {
+        if(i == iv) continue;
+        const Cell_handle nb = c->neighbor(i);
+        if(std::find(cells.begin(), cells.end(), nb) == cells.end()) cells.push_back(nb);
+      }
     }
-    for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
-      // count connected fans of boundary facets around v through shared boundary edges
-      std::vector<Cell_handle> inc;
-      dt.incident_cells(v, std::back_inserter(inc));
-      bool any_in = false, any_out = false;
-      for(Cell_handle c : inc) (c->info() ? any_in : any_out) = true;
-      if(!any_in || !any_out) continue;
-      // kept cells around v connected through kept-kept faces containing v, and likewise outside:
-      // v is manifold iff the inside cells form one component and the outside cells one
-      auto components = [&](char side) {
-        std::map<Cell_handle, int> comp;
-        int ncomp = 0;
-        for(Cell_handle s : inc) {
-          if(s->info() != side || comp.count(s)) continue;
-          ++ncomp;
-          std::vector<Cell_handle> stack(1, s);
-          comp[s] = ncomp;
-          while(!stack.empty()) {
-            Cell_handle c = stack.back(); stack.pop_back();
-            const int iv = c->index(v);
-            for(int i = 0; i < 4; ++i) {
-              if(i == iv) continue;
-              Cell_handle nb = c->neighbor(i);
-              if(nb->info() == side && nb->has_vertex(v) && !comp.count(nb)) { comp[nb] = ncomp; stack.push_back(nb); }
-            }
+  };
+  // v is manifold iff the kept cells around it, connected through the kept-kept faces that hold
+  // v, form one component, and the others one
+  auto manifold_vertex = [](Vertex_handle v, const std::vector<Cell_handle>& inc) {
+    std::vector<int> component(inc.size(), 0);
+    for(char side = 0; side < 2; ++side) {
+      int count = 0;
+      for(std::size_t s = 0; s < inc.size(); ++s) {
+        if(inc[s]->info() != side || component[s] != 0) continue;
+        if(++count > 1) return false;
+        std::vector<std::size_t> stack(1, s);
+        component[s] = 1;
+        while(!stack.empty()) {
+          const Cell_handle c = inc[stack.back()];
+          stack.pop_back();
+          const int iv = c->index(v);
+          for(int i = 0; i < 4; ++i) {
+            if(i == iv || c->neighbor(i)->info() != side) continue;
+            const std::size_t k = std::size_t(std::find(inc.begin(), inc.end(), c->neighbor(i)) - inc.begin());
+            if(component[k] == 0) { component[k] = 1; stack.push_back(k); }
           }
         }
-        return ncomp;
-      };
-      if(components(1) > 1 || components(0) > 1)
-        for(Cell_handle c : inc) if(c->info()) to_remove.insert(c);
+      }
+    }
+    return true;
+  };
+  for(int pass = 0; pass < 200;) {
+    // Only the edges and vertices of boundary faces can be non-manifold: each is looked at once
+    // (an edge from the face of its smallest cell and index), by all threads at once.
+    std::vector<typename Dt::Edge> edges;
+    std::vector<Vertex_handle> vertices;
+    for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
+      if(!c->info()) continue;
+      for(int i = 0; i < 4; ++i) {
+        if(c->neighbor(i)->info()) continue;
+        for(int a = 0; a < 4; ++a) {
+          if(a == i) continue;
+          vertices.push_back(c->vertex(a));
+          for(int b = a + 1; b < 4; ++b) if(b != i) edges.emplace_back(Cell_handle(c), a, b);
+        }
+      }
+    }
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    auto key = [](const typename Dt::Edge& e) {
+      const Vertex_handle a = e.first->vertex(e.second), b = e.first->vertex(e.third);
+      return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+    };
+    std::sort(edges.begin(), edges.end(), [&](const typename Dt::Edge& x, const typename Dt::Edge& y) { return key(x) < key(y); });
+    edges.erase(std::unique(edges.begin(), edges.end(), [&](const typename Dt::Edge& x, const typename Dt::Edge& y) { return key(x) == key(y); }), edges.end());
+    std::set<Cell_handle> to_remove;
+#pragma omp parallel num_threads(o.threads)
+    {
+      std::vector<Cell_handle> ring, inc, found;
+#pragma omp for schedule(dynamic, 256) nowait
+      for(std::ptrdiff_t k = 0; k < std::ptrdiff_t(edges.size()); ++k) {
+        ring.clear();
+        auto cc = dt.incident_cells(edges[k]), done = cc;
+        do { ring.push_back(cc); ++cc; } while(cc != done);
+        int changes = 0;
+        for(std::size_t r = 0; r < ring.size(); ++r) changes += ring[r]->info() != ring[(r + 1) % ring.size()]->info();
+        if(changes > 2)
+          for(Cell_handle c : ring) if(c->info()) found.push_back(c);
+      }
+#pragma omp for schedule(dynamic, 256)
+      for(std::ptrdiff_t k = 0; k < std::ptrdiff_t(vertices.size()); ++k) {
+        star(vertices[k], inc);
+        if(!manifold_vertex(vertices[k], inc))
+          for(Cell_handle c : inc) if(c->info()) found.push_back(c);
+      }
+#pragma omp critical(lattice_mesher_3_tetrahedralize)
+      to_remove.insert(found.begin(), found.end());
     }
     if(to_remove.empty()) break;
     // the wedges kept against the flat test that the boundary cannot take go first, alone: the
