@@ -76,6 +76,140 @@ Tetrahedralization_options tetrahedralization_options(const NamedParameters& np)
 
 namespace internal {
 
+// The cells around v (its star), by a walk through the faces that hold v: the triangulation's
+// own incident_cells() marks the cells it visits, which threads cannot share.
+template <typename Vertex_handle, typename Cell_handle>
+void star_of(Vertex_handle v, std::vector<Cell_handle>& cells)
+{
+  cells.assign(1, v->cell());
+  for(std::size_t k = 0; k < cells.size(); ++k) {
+    const Cell_handle c = cells[k];
+    const int iv = c->index(v);
+    for(int i = 0; i < 4; ++i) {
+      if(i == iv) continue;
+      const Cell_handle nb = c->neighbor(i);
+      if(std::find(cells.begin(), cells.end(), nb) == cells.end()) cells.push_back(nb);
+    }
+  }
+}
+
+// Whether v is manifold: the kept cells of its star (info 1), connected through the faces that
+// hold v, form one component, and the others one.
+template <typename Vertex_handle, typename Cell_handle>
+bool manifold_vertex(Vertex_handle v, const std::vector<Cell_handle>& star)
+{
+  std::vector<char> reached(star.size(), 0);
+  for(char side = 0; side < 2; ++side) {
+    int components = 0;
+    for(std::size_t s = 0; s < star.size(); ++s) {
+      if(star[s]->info() != side || reached[s]) continue;
+      if(++components > 1) return false;
+      std::vector<std::size_t> stack(1, s);
+      reached[s] = 1;
+      while(!stack.empty()) {
+        const Cell_handle c = star[stack.back()];
+        stack.pop_back();
+        const int iv = c->index(v);
+        for(int i = 0; i < 4; ++i) {
+          if(i == iv || c->neighbor(i)->info() != side) continue;
+          const std::size_t k = std::size_t(std::find(star.begin(), star.end(), c->neighbor(i)) - star.begin());
+          if(!reached[k]) { reached[k] = 1; stack.push_back(k); }
+        }
+      }
+    }
+  }
+  return true;
+}
+
+// The kept cells (info 1) around the edges in more than two boundary faces and the vertices whose
+// boundary faces form several fans. Only the edges and vertices of boundary faces can be such:
+// each is looked at once, by all threads at once.
+template <typename Dt>
+std::set<typename Dt::Cell_handle> cells_around_non_manifold(const Dt& dt, int threads)
+{
+  typedef typename Dt::Cell_handle Cell_handle;
+  typedef typename Dt::Vertex_handle Vertex_handle;
+  typedef typename Dt::Edge Edge;
+  std::vector<Edge> edges;
+  std::vector<Vertex_handle> vertices;
+  for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
+    if(!c->info()) continue;
+    for(int i = 0; i < 4; ++i) {
+      if(c->neighbor(i)->info()) continue;
+      for(int a = 0; a < 4; ++a) {
+        if(a == i) continue;
+        vertices.push_back(c->vertex(a));
+        for(int b = a + 1; b < 4; ++b) if(b != i) edges.emplace_back(Cell_handle(c), a, b);
+      }
+    }
+  }
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  auto key = [](const Edge& e) {
+    const Vertex_handle a = e.first->vertex(e.second), b = e.first->vertex(e.third);
+    return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+  };
+  std::sort(edges.begin(), edges.end(), [&](const Edge& x, const Edge& y) { return key(x) < key(y); });
+  edges.erase(std::unique(edges.begin(), edges.end(), [&](const Edge& x, const Edge& y) { return key(x) == key(y); }), edges.end());
+  std::set<Cell_handle> cells;
+#pragma omp parallel num_threads(threads)
+  {
+    std::vector<Cell_handle> ring, star, found;
+#pragma omp for schedule(dynamic, 256) nowait
+    for(std::ptrdiff_t k = 0; k < std::ptrdiff_t(edges.size()); ++k) {
+      ring.clear();
+      auto cc = dt.incident_cells(edges[k]), done = cc;
+      do { ring.push_back(cc); ++cc; } while(cc != done);
+      int changes = 0;
+      for(std::size_t r = 0; r < ring.size(); ++r) changes += ring[r]->info() != ring[(r + 1) % ring.size()]->info();
+      if(changes > 2)
+        for(Cell_handle c : ring) if(c->info()) found.push_back(c);
+    }
+#pragma omp for schedule(dynamic, 256)
+    for(std::ptrdiff_t k = 0; k < std::ptrdiff_t(vertices.size()); ++k) {
+      star_of(vertices[k], star);
+      if(!manifold_vertex(vertices[k], star))
+        for(Cell_handle c : star) if(c->info()) found.push_back(c);
+    }
+#pragma omp critical(lattice_mesher_3_tetrahedralize)
+    cells.insert(found.begin(), found.end());
+  }
+  return cells;
+}
+
+// Makes the boundary of the kept cells (info 1) of dt manifold by removing the kept cells around
+// each non-manifold edge or vertex that have a face on the boundary (peeling), repeated until
+// nothing changes: each pass removes cells, so it ends, but where the domain is thin one removal
+// may expose the next (cheese and rotor at 3,000 vertices: more than 20 passes), hence the
+// generous bound.
+template <typename Dt>
+void make_boundary_manifold(Dt& dt, std::set<typename Dt::Cell_handle>& wedges, int threads)
+{
+  typedef typename Dt::Cell_handle Cell_handle;
+  auto is_boundary_facet = [](Cell_handle c, int i) { return c->info() != c->neighbor(i)->info(); };
+  for(int pass = 0; pass < 200;) {
+    const std::set<Cell_handle> to_remove = cells_around_non_manifold(dt, threads);
+    if(to_remove.empty()) break;
+    // the wedges kept against the flat test that the boundary cannot take go first, alone: the
+    // repair then goes on as without them (fandisk kept them all: Hausdorff 0.0145 -> 0.0222)
+    std::vector<Cell_handle> unkept;
+    for(Cell_handle c : to_remove) if(wedges.erase(c)) unkept.push_back(c);
+    for(Cell_handle c : unkept) c->info() = 0;
+    if(!unkept.empty()) continue;   // not counted as a pass: at most one per wedge
+    // remove only cells that touch the boundary, so that repairs stay local; decided before any
+    // removal, so that the result does not depend on the order of the set (cell addresses)
+    std::vector<Cell_handle> touching;
+    for(Cell_handle c : to_remove) {
+      bool touches = false;
+      for(int i = 0; i < 4; ++i) touches = touches || is_boundary_facet(c, i);
+      if(touches) touching.push_back(c);
+    }
+    if(touching.empty()) touching.assign(to_remove.begin(), to_remove.end());
+    for(Cell_handle c : touching) c->info() = 0;
+    ++pass;
+  }
+}
+
 // The Delaunay tetrahedralization of the particles placed at y, restricted to the domain and
 // repaired (see tetrahedralize_particles()); every geometric test but the Delaunay one is on
 // the particles' own positions.
@@ -143,117 +277,8 @@ Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& p
   std::set<Cell_handle> wedges;
   for(std::size_t k = 0; k < cells.size(); ++k) if(wedge[k]) wedges.insert(cells[k]);
 
-  // 2. Repair: a boundary edge in more than two boundary faces, or a vertex whose boundary
-  // faces form several fans, is made manifold by removing the kept cells around it that have
-  // a face on the boundary (peeling), repeated until nothing changes: each pass removes cells,
-  // so it ends, but where the domain is thin one removal may expose the next (cheese and rotor at
-  // 3,000 vertices: more than 20 passes), hence the generous bound.
-  auto is_boundary_facet = [](Cell_handle c, int i) { return c->info() != c->neighbor(i)->info(); };
-  // the cells around v (v's star), by a walk through the faces that hold v: the triangulation's
-  // own incident_cells() marks cells, and the threads share them
-  auto star = [](Vertex_handle v, std::vector<Cell_handle>& cells) {
-    cells.assign(1, v->cell());
-    for(std::size_t k = 0; k < cells.size(); ++k) {
-      const Cell_handle c = cells[k];
-      const int iv = c->index(v);
-      for(int i = 0; i < 4; ++i) {
-        if(i == iv) continue;
-        const Cell_handle nb = c->neighbor(i);
-        if(std::find(cells.begin(), cells.end(), nb) == cells.end()) cells.push_back(nb);
-      }
-    }
-  };
-  // v is manifold iff the kept cells around it, connected through the kept-kept faces that hold
-  // v, form one component, and the others one
-  auto manifold_vertex = [](Vertex_handle v, const std::vector<Cell_handle>& inc) {
-    std::vector<int> component(inc.size(), 0);
-    for(char side = 0; side < 2; ++side) {
-      int count = 0;
-      for(std::size_t s = 0; s < inc.size(); ++s) {
-        if(inc[s]->info() != side || component[s] != 0) continue;
-        if(++count > 1) return false;
-        std::vector<std::size_t> stack(1, s);
-        component[s] = 1;
-        while(!stack.empty()) {
-          const Cell_handle c = inc[stack.back()];
-          stack.pop_back();
-          const int iv = c->index(v);
-          for(int i = 0; i < 4; ++i) {
-            if(i == iv || c->neighbor(i)->info() != side) continue;
-            const std::size_t k = std::size_t(std::find(inc.begin(), inc.end(), c->neighbor(i)) - inc.begin());
-            if(component[k] == 0) { component[k] = 1; stack.push_back(k); }
-          }
-        }
-      }
-    }
-    return true;
-  };
-  for(int pass = 0; pass < 200;) {
-    // Only the edges and vertices of boundary faces can be non-manifold: each is looked at once
-    // (an edge from the face of its smallest cell and index), by all threads at once.
-    std::vector<typename Dt::Edge> edges;
-    std::vector<Vertex_handle> vertices;
-    for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
-      if(!c->info()) continue;
-      for(int i = 0; i < 4; ++i) {
-        if(c->neighbor(i)->info()) continue;
-        for(int a = 0; a < 4; ++a) {
-          if(a == i) continue;
-          vertices.push_back(c->vertex(a));
-          for(int b = a + 1; b < 4; ++b) if(b != i) edges.emplace_back(Cell_handle(c), a, b);
-        }
-      }
-    }
-    std::sort(vertices.begin(), vertices.end());
-    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-    auto key = [](const typename Dt::Edge& e) {
-      const Vertex_handle a = e.first->vertex(e.second), b = e.first->vertex(e.third);
-      return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
-    };
-    std::sort(edges.begin(), edges.end(), [&](const typename Dt::Edge& x, const typename Dt::Edge& y) { return key(x) < key(y); });
-    edges.erase(std::unique(edges.begin(), edges.end(), [&](const typename Dt::Edge& x, const typename Dt::Edge& y) { return key(x) == key(y); }), edges.end());
-    std::set<Cell_handle> to_remove;
-#pragma omp parallel num_threads(o.threads)
-    {
-      std::vector<Cell_handle> ring, inc, found;
-#pragma omp for schedule(dynamic, 256) nowait
-      for(std::ptrdiff_t k = 0; k < std::ptrdiff_t(edges.size()); ++k) {
-        ring.clear();
-        auto cc = dt.incident_cells(edges[k]), done = cc;
-        do { ring.push_back(cc); ++cc; } while(cc != done);
-        int changes = 0;
-        for(std::size_t r = 0; r < ring.size(); ++r) changes += ring[r]->info() != ring[(r + 1) % ring.size()]->info();
-        if(changes > 2)
-          for(Cell_handle c : ring) if(c->info()) found.push_back(c);
-      }
-#pragma omp for schedule(dynamic, 256)
-      for(std::ptrdiff_t k = 0; k < std::ptrdiff_t(vertices.size()); ++k) {
-        star(vertices[k], inc);
-        if(!manifold_vertex(vertices[k], inc))
-          for(Cell_handle c : inc) if(c->info()) found.push_back(c);
-      }
-#pragma omp critical(lattice_mesher_3_tetrahedralize)
-      to_remove.insert(found.begin(), found.end());
-    }
-    if(to_remove.empty()) break;
-    // the wedges kept against the flat test that the boundary cannot take go first, alone: the
-    // repair then goes on as without them (fandisk kept them all: Hausdorff 0.0145 -> 0.0222)
-    std::vector<Cell_handle> unkept;
-    for(Cell_handle c : to_remove) if(wedges.erase(c)) unkept.push_back(c);
-    for(Cell_handle c : unkept) c->info() = 0;
-    if(!unkept.empty()) continue;   // not counted as a pass: at most one per wedge
-    // remove only cells that touch the boundary, so that repairs stay local; decided before any
-    // removal, so that the result does not depend on the order of the set (cell addresses)
-    std::vector<Cell_handle> touching;
-    for(Cell_handle c : to_remove) {
-      bool touches = false;
-      for(int i = 0; i < 4; ++i) touches = touches || is_boundary_facet(c, i);
-      if(touches) touching.push_back(c);
-    }
-    if(touching.empty()) touching.assign(to_remove.begin(), to_remove.end());
-    for(Cell_handle c : touching) c->info() = 0;
-    ++pass;
-  }
+  // 2. A manifold boundary.
+  make_boundary_manifold(dt, wedges, o.threads);
 
   // 3. Output, with the particles that are used renumbered.
   Tetrahedral_mesh_3<Point_3> mesh;
