@@ -47,14 +47,17 @@ std::size_t delete_particles(Particle_set_3<Point_3>& ps, const Domain& /*domain
 
   // each particle's neighbours by ascending isotropic distance, sorted by all threads: the
   // deletions, one after the other, only skip those already deleted
-  std::vector<std::pair<double, int> > nearest(graph.neighbor.size());
+  struct Neighbor { double distance; int index; };   // (uninitialized: written by all threads)
+  internal::Unzeroed_vector<Neighbor> nearest;
+  nearest.resize(graph.neighbor.size(), internal::default_init);
 #pragma omp parallel for num_threads(o.threads) schedule(static)
   for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i) {
     for(int e = graph.offsets[i]; e < graph.offsets[i + 1]; ++e) {
       const int j = graph.neighbor[e];
       nearest[e] = { (graph.pair_map[graph.pair_of[e]] * (x[i] - x[j])).norm(), j };
     }
-    std::sort(nearest.begin() + graph.offsets[i], nearest.begin() + graph.offsets[i + 1]);
+    std::sort(nearest.begin() + graph.offsets[i], nearest.begin() + graph.offsets[i + 1],
+              [](const Neighbor& a, const Neighbor& b) { return a.distance < b.distance || (a.distance == b.distance && a.index < b.index); });
   }
 
   static const int counts[5] = { 1, 2, 4, 6, 8 };
@@ -66,7 +69,7 @@ std::size_t delete_particles(Particle_set_3<Point_3>& ps, const Domain& /*domain
     if(ps.kinds[i] == Particle_kind::FIXED) continue;
     d.clear();
     for(int e = graph.offsets[i]; e < graph.offsets[i + 1] && d.size() < 8; ++e)
-      if(alive[nearest[e].second]) d.push_back(nearest[e].first);
+      if(alive[nearest[e].index]) d.push_back(nearest[e].distance);
     if(d.size() < 8) d.resize(8, radius);   // (the neighbours are within the radius)
     double sum = 0.;
     int k = 0;

@@ -107,9 +107,15 @@ public:
   Particle_energy_3(const Neighbor_graph& graph, const Gaussian_hole_kernel_3& kernel,
                     const std::vector<Vec3>& origin, const std::vector<Mat3>& maps, int threads)
     : graph_(graph), kernel_(kernel), origin_(origin), maps_(maps), threads_(threads),
-      x_(origin.size()), pair_energy_(graph.pairs.size()), pair_gradient_(graph.pairs.size()),
-      pair_shared_(graph.map_slopes.empty() ? 0 : graph.pairs.size(), Vec3::Zero())   // 0 for pairs without slope
-  {}
+      x_(origin.size())
+  {
+    const std::ptrdiff_t np = std::ptrdiff_t(graph.pairs.size());
+    pair_energy_.resize(std::size_t(np), default_init);
+    pair_gradient_.resize(std::size_t(np), default_init);
+    pair_shared_.resize(graph.map_slopes.empty() ? 0 : std::size_t(np), default_init);
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for(std::ptrdiff_t p = 0; p < std::ptrdiff_t(pair_shared_.size()); ++p) pair_shared_[p].setZero();   // pairs without slope
+  }
 
   // positions (units of l*) of the variables U
   Vec3 position(const Eigen::VectorXd& U, std::ptrdiff_t i) const
@@ -117,7 +123,7 @@ public:
 
   double operator()(const Eigen::VectorXd& U, Eigen::VectorXd& G)
   {
-    const std::vector<std::array<Mat3, 3> >& slopes = graph_.map_slopes;
+    const auto& slopes = graph_.map_slopes;
     const std::ptrdiff_t np = std::ptrdiff_t(graph_.pairs.size());
     const std::ptrdiff_t n = std::ptrdiff_t(graph_.number_of_particles());
 #pragma omp parallel num_threads(threads_)
@@ -175,8 +181,8 @@ private:
   const std::vector<Mat3>& maps_;
   int threads_;
   std::vector<Vec3> x_;
-  std::vector<double> pair_energy_;
-  std::vector<Vec3> pair_gradient_, pair_shared_;
+  Unzeroed_vector<double> pair_energy_;
+  Unzeroed_vector<Vec3> pair_gradient_, pair_shared_;
   double best_energy_ = std::numeric_limits<double>::infinity();
   Eigen::VectorXd best_U_;
 };

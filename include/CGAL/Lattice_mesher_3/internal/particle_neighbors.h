@@ -20,6 +20,7 @@
 #include <CGAL/Search_traits_adapter.h>
 #include <CGAL/property_map.h>
 
+#include <boost/container/vector.hpp>
 #include <boost/iterator/counting_iterator.hpp>
 #include <Eigen/Dense>
 
@@ -157,23 +158,93 @@ Particle_frames compute_particle_frames(const std::vector<Vec3>& x, const FrameF
 // its half as a list of pairs (i < j) with the isotropic map B of the pair's midpoint. B is
 // frozen when the graph is built: the energy of an optimization round is then a smooth function
 // of the positions, with the exact gradient that the line search needs.
+// An array whose resize() leaves new elements default-initialized (not zeroed, which would be
+// done by one thread): those of the neighbour graphs and the energy are filled by all threads.
+template <typename T>
+using Unzeroed_vector = boost::container::vector<T>;
+using boost::container::default_init;
+
 struct Neighbor_graph
 {
-  // CSR: neighbours of i are entries [offsets[i], offsets[i+1]); entry e is particle
-  // neighbor[e], through pair pair_of[e] (sign +1 if i is the pair's first particle).
-  std::vector<int> offsets, neighbor, pair_of;
-  std::vector<std::array<int, 2> > pairs;
-  std::vector<Mat3> pair_map;
+  // CSR: neighbours of i are entries [offsets[i], offsets[i+1]), by ascending pair index; entry
+  // e is particle neighbor[e], through pair pair_of[e].
+  std::vector<int> offsets;
+  Unzeroed_vector<int> neighbor, pair_of;
+  Unzeroed_vector<std::array<int, 2> > pairs;
+  Unzeroed_vector<Mat3> pair_map;
   // dB/dx_a (a = 0, 1, 2) at each particle, in the units of the positions: a pair's map is then
   // B_ij + sum_a S_a (m - m_ij)_a, S the mean of its particles' slopes and m its moving midpoint
   // (`estimate_map_slopes()`); empty: B frozen.
-  std::vector<std::array<Mat3, 3> > map_slopes;
+  Unzeroed_vector<std::array<Mat3, 3> > map_slopes;
   // per pair, with map_slopes: whether one of its particles has a slope (where the field is the
   // same around both, B_ij stays as it is)
-  std::vector<char> sloped_pairs;
+  Unzeroed_vector<char> sloped_pairs;
 
   std::size_t number_of_particles() const { return offsets.empty() ? 0 : offsets.size() - 1; }
 };
+
+// The pairs into `g` in the order of the particles that found them (`kept`, with their maps),
+// copied by all threads, each freeing its particles' lists (a thread frees faster than one
+// alone: 2 n lists a graph).
+inline void copy_pairs(std::vector<std::vector<std::pair<int, Mat3> > >& kept, std::vector<std::vector<int> >& candidates,
+                       Neighbor_graph& g, int threads)
+{
+  const std::size_t n = kept.size();
+  std::vector<std::size_t> first(n + 1, 0);
+  for(std::size_t i = 0; i < n; ++i) first[i + 1] = first[i] + kept[i].size();
+  g.pairs.resize(first[n], default_init);
+  g.pair_map.resize(first[n], default_init);
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i) {
+    for(std::size_t k = 0; k < kept[i].size(); ++k) {
+      const int j = kept[i][k].first;
+      g.pairs[first[i] + k] = { (std::min)(int(i), j), (std::max)(int(i), j) };
+      g.pair_map[first[i] + k] = kept[i][k].second;
+    }
+    std::vector<std::pair<int, Mat3> >().swap(kept[i]);
+    std::vector<int>().swap(candidates[i]);
+  }
+}
+
+// The CSR lists of g's pairs among n particles, by all threads: each pair takes the next slot of its two particles
+// (atomically), then each particle's list is sorted by pair index, the order of one thread.
+inline void make_adjacency(Neighbor_graph& g, std::size_t n, int threads)
+{
+  std::vector<int> fill(n, 0);
+  g.offsets.assign(n + 1, 0);
+  const std::ptrdiff_t np = std::ptrdiff_t(g.pairs.size());
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for(std::ptrdiff_t p = 0; p < np; ++p)
+    for(int i : g.pairs[p]) {
+#pragma omp atomic
+      ++fill[i];
+    }
+  for(std::size_t i = 0; i < n; ++i) g.offsets[i + 1] = g.offsets[i] + fill[i];
+  std::copy(g.offsets.begin(), g.offsets.end() - 1, fill.begin());
+  g.neighbor.resize(std::size_t(g.offsets[n]), default_init);
+  g.pair_of.resize(std::size_t(g.offsets[n]), default_init);
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for(std::ptrdiff_t p = 0; p < np; ++p)
+    for(int k = 0; k < 2; ++k) {
+      const int i = g.pairs[p][k];
+      int slot;
+#pragma omp atomic capture
+      slot = fill[i]++;
+      g.neighbor[slot] = g.pairs[p][1 - k];
+      g.pair_of[slot] = int(p);
+    }
+#pragma omp parallel num_threads(threads)
+  {
+    std::vector<std::pair<int, int> > list;   // (pair, neighbour)
+#pragma omp for schedule(static)
+    for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i) {
+      list.clear();
+      for(int e = g.offsets[i]; e < g.offsets[i + 1]; ++e) list.emplace_back(g.pair_of[e], g.neighbor[e]);
+      std::sort(list.begin(), list.end());
+      for(int e = g.offsets[i], k = 0; e < g.offsets[i + 1]; ++e, ++k) { g.pair_of[e] = list[k].first; g.neighbor[e] = list[k].second; }
+    }
+  }
+}
 
 template <typename K, typename FrameField>
 Neighbor_graph build_neighbor_graph(const std::vector<Vec3>& x, const Particle_frames& frames,
@@ -221,31 +292,9 @@ Neighbor_graph build_neighbor_graph(const std::vector<Vec3>& x, const Particle_f
   }
   if(failed) throw std::domain_error(what);
 
-  // the pairs in the order of the particles that found them, copied in parallel
   Neighbor_graph g;
-  std::vector<std::size_t> first(n + 1, 0);
-  for(std::size_t i = 0; i < n; ++i) first[i + 1] = first[i] + kept[i].size();
-  g.pairs.resize(first[n]);
-  g.pair_map.resize(first[n]);
-#pragma omp parallel for num_threads(threads) schedule(static)
-  for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i)
-    for(std::size_t k = 0; k < kept[i].size(); ++k) {
-      const int j = kept[i][k].first;
-      g.pairs[first[i] + k] = { (std::min)(int(i), j), (std::max)(int(i), j) };
-      g.pair_map[first[i] + k] = kept[i][k].second;
-    }
-  std::vector<int> degree(n, 0);
-  for(const std::array<int, 2>& p : g.pairs) { ++degree[p[0]]; ++degree[p[1]]; }
-  g.offsets.assign(n + 1, 0);
-  for(std::size_t i = 0; i < n; ++i) g.offsets[i + 1] = g.offsets[i] + degree[i];
-  g.neighbor.resize(g.offsets[n]);
-  g.pair_of.resize(g.offsets[n]);
-  std::vector<int> fill(g.offsets.begin(), g.offsets.end() - 1);
-  for(std::size_t p = 0; p < g.pairs.size(); ++p) {
-    const int i = g.pairs[p][0], j = g.pairs[p][1];
-    g.neighbor[fill[i]] = j; g.pair_of[fill[i]++] = int(p);
-    g.neighbor[fill[j]] = i; g.pair_of[fill[j]++] = int(p);
-  }
+  copy_pairs(kept, candidates, g, threads);
+  make_adjacency(g, n, threads);
   return g;
 }
 
@@ -266,7 +315,7 @@ inline void estimate_map_slopes(Neighbor_graph& g, const std::vector<Vec3>& x, c
   for(const std::array<int, 2>& p : g.pairs) varies = varies || B[p[0]] != B[p[1]];
   g.map_slopes.clear();
   if(!varies) return;
-  g.map_slopes.resize(n);
+  g.map_slopes.resize(std::size_t(n), default_init);
   std::vector<char> sloped(n, 0);
 #pragma omp parallel for num_threads(threads) schedule(static)
   for(std::ptrdiff_t i = 0; i < n; ++i) {
@@ -289,8 +338,9 @@ inline void estimate_map_slopes(Neighbor_graph& g, const std::vector<Vec3>& x, c
     for(int k = 0; k < 3; ++k) s[k] = Eigen::Map<const Mat3>(slope.row(k).eval().data());
     sloped[i] = !slope.isZero(0.);
   }
-  g.sloped_pairs.resize(g.pairs.size());
-  for(std::size_t p = 0; p < g.pairs.size(); ++p) g.sloped_pairs[p] = sloped[g.pairs[p][0]] || sloped[g.pairs[p][1]];
+  g.sloped_pairs.resize(g.pairs.size(), default_init);
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for(std::ptrdiff_t p = 0; p < std::ptrdiff_t(g.pairs.size()); ++p) g.sloped_pairs[p] = sloped[g.pairs[p][0]] || sloped[g.pairs[p][1]];
 }
 
 // Uniform hash grid for a growing point set (the insertion's accepted candidates), where a
