@@ -109,10 +109,10 @@ public:
     : graph_(graph), kernel_(kernel), origin_(origin), maps_(maps), threads_(threads),
       x_(origin.size())
   {
-    const std::ptrdiff_t np = std::ptrdiff_t(graph.pairs.size());
-    pair_energy_.resize(std::size_t(np), default_init);
-    pair_gradient_.resize(std::size_t(np), default_init);
-    pair_shared_.resize(graph.map_slopes.empty() ? 0 : std::size_t(np), default_init);
+    const std::size_t np = graph.pairs.size();
+    pair_energy_.resize(np, default_init);
+    pair_gradient_.resize(np, default_init);
+    pair_shared_.resize(graph.map_slopes.empty() ? 0 : np, default_init);
 #pragma omp parallel for num_threads(threads) schedule(static)
     for(std::ptrdiff_t p = 0; p < std::ptrdiff_t(pair_shared_.size()); ++p) pair_shared_[p].setZero();   // pairs without slope
   }

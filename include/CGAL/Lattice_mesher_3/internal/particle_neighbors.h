@@ -154,16 +154,16 @@ Particle_frames compute_particle_frames(const std::vector<Vec3>& x, const FrameF
   return f;
 }
 
-// The neighbours of every particle within an isotropic radius, as a symmetric CSR graph, and
-// its half as a list of pairs (i < j) with the isotropic map B of the pair's midpoint. B is
-// frozen when the graph is built: the energy of an optimization round is then a smooth function
-// of the positions, with the exact gradient that the line search needs.
 // An array whose resize() leaves new elements default-initialized (not zeroed, which would be
 // done by one thread): those of the neighbour graphs and the energy are filled by all threads.
 template <typename T>
 using Unzeroed_vector = boost::container::vector<T>;
 using boost::container::default_init;
 
+// The neighbours of every particle within an isotropic radius, as a symmetric CSR graph, and
+// its half as a list of pairs (i < j) with the isotropic map B of the pair's midpoint. B is
+// frozen when the graph is built: the energy of an optimization round is then a smooth function
+// of the positions, with the exact gradient that the line search needs.
 struct Neighbor_graph
 {
   // CSR: neighbours of i are entries [offsets[i], offsets[i+1]), by ascending pair index; entry
@@ -183,11 +183,9 @@ struct Neighbor_graph
   std::size_t number_of_particles() const { return offsets.empty() ? 0 : offsets.size() - 1; }
 };
 
-// The pairs into `g` in the order of the particles that found them (`kept`, with their maps),
-// copied by all threads, each freeing its particles' lists (a thread frees faster than one
-// alone: 2 n lists a graph).
-inline void copy_pairs(std::vector<std::vector<std::pair<int, Mat3> > >& kept, std::vector<std::vector<int> >& candidates,
-                       Neighbor_graph& g, int threads)
+// The pairs into `g` in the order of the particles that found them (`kept`, with their maps,
+// consumed), copied by all threads, each freeing the lists it copied.
+inline void copy_pairs(std::vector<std::vector<std::pair<int, Mat3> > >& kept, Neighbor_graph& g, int threads)
 {
   const std::size_t n = kept.size();
   std::vector<std::size_t> first(n + 1, 0);
@@ -202,12 +200,11 @@ inline void copy_pairs(std::vector<std::vector<std::pair<int, Mat3> > >& kept, s
       g.pair_map[first[i] + k] = kept[i][k].second;
     }
     std::vector<std::pair<int, Mat3> >().swap(kept[i]);
-    std::vector<int>().swap(candidates[i]);
   }
 }
 
-// The CSR lists of g's pairs among n particles, by all threads: each pair takes the next slot of its two particles
-// (atomically), then each particle's list is sorted by pair index, the order of one thread.
+// The CSR lists of g's pairs among n particles, by all threads: each pair takes the next slot of
+// its two particles (atomically), then each list is sorted by pair index, the order of one thread.
 inline void make_adjacency(Neighbor_graph& g, std::size_t n, int threads)
 {
   std::vector<int> fill(n, 0);
@@ -293,7 +290,7 @@ Neighbor_graph build_neighbor_graph(const std::vector<Vec3>& x, const Particle_f
   if(failed) throw std::domain_error(what);
 
   Neighbor_graph g;
-  copy_pairs(kept, candidates, g, threads);
+  copy_pairs(kept, g, threads);
   make_adjacency(g, n, threads);
   return g;
 }
