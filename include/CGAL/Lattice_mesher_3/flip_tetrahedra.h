@@ -390,34 +390,42 @@ public:
   // Tries the tetrahedra of `list` in its order. With several threads, they look at a batch at
   // once and the flips are made in order; a tetrahedron with a vertex that a flip of its batch
   // changed is looked at again (a try depends on the tetrahedra around t alone, and a flip marks
-  // every vertex of the tetrahedra it replaces), so the flips are those of one thread.
+  // every vertex of the tetrahedra it replaces), so the flips are those of one thread. A batch
+  // holds the tetrahedra worth trying of a stretch of the list: the others (after a smoothing,
+  // most of the mesh) are neither measured nor handed to the threads, and one that a flip of
+  // the batch makes worth trying is looked at in order, as changed.
   void try_all(const std::vector<int>& list, Criterion c, Flip_result& result)
   {
     // larger batches collide more (bunny at 60,000 vertices, two threads: the flips take 2.3 s
     // with 64 candidates a thread, 2.6 s with 512)
     const std::size_t batch = o_.threads > 1 ? 64 * std::size_t(o_.threads) : 1;
     std::vector<Flip_plan> plans;
-    for(std::size_t first = 0; first < list.size(); first += batch) {
-      const std::size_t n = (std::min)(batch, list.size() - first);
+    std::vector<std::size_t> looked;   // positions in `list` of the batch
+    for(std::size_t first = 0, end = 0; first < list.size(); first = end) {
+      looked.clear();
+      for(; end < list.size() && looked.size() < batch; ++end)
+        if(alive(list[end]) && worth_trying(list[end])) looked.push_back(end);
       const long start = clock_;
-      plans.assign(n, Flip_plan());
+      plans.assign(looked.size(), Flip_plan());
       if(o_.threads > 1) {
         // each thread stores the measure of its own tetrahedra, not of the others
         looking_in_parallel_ = true;
         try {
-          parallel_for_rethrow(n, [&](std::size_t k) {
-            const int t = list[first + k];
+          parallel_for_rethrow(looked.size(), [&](std::size_t k) {
+            const int t = list[looked[k]];
             if(std::isnan(measure_[t].angle)) measure_[t] = measure_now(t);
             plans[k] = look(t, c);
           }, o_.threads);
         } catch(...) { looking_in_parallel_ = false; throw; }
         looking_in_parallel_ = false;
       }
-      for(std::size_t k = 0; k < n; ++k) {
-        const int t = list[first + k];
+      Flip_plan skip;   // SKIP, for those not worth trying when the batch was looked at
+      for(std::size_t k = first, next = 0; k < end; ++k) {
+        const int t = list[k];
         const std::array<int, 4>& v = tets_[t];
-        if(o_.threads == 1 || std::any_of(v.begin(), v.end(), [&](int u) { return changed_[u] > start; })) plans[k] = look(t, c);
-        make(t, plans[k], result);
+        Flip_plan& plan = next < looked.size() && looked[next] == k ? plans[next++] : (skip = Flip_plan());
+        if(o_.threads == 1 || std::any_of(v.begin(), v.end(), [&](int u) { return changed_[u] > start; })) plan = look(t, c);
+        make(t, plan, result);
       }
     }
   }
