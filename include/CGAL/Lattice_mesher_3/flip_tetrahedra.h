@@ -419,12 +419,16 @@ public:
         } catch(...) { looking_in_parallel_ = false; throw; }
         looking_in_parallel_ = false;
       }
-      Flip_plan skip;   // SKIP, for those not worth trying when the batch was looked at
+      // on one thread the batch is looked at here; the others of the stretch are skipped unless
+      // a flip before them changed a vertex of theirs
       for(std::size_t k = first, next = 0; k < end; ++k) {
         const int t = list[k];
         const std::array<int, 4>& v = tets_[t];
-        Flip_plan& plan = next < looked.size() && looked[next] == k ? plans[next++] : (skip = Flip_plan());
-        if(o_.threads == 1 || std::any_of(v.begin(), v.end(), [&](int u) { return changed_[u] > start; })) plan = look(t, c);
+        const bool batched = next < looked.size() && looked[next] == k;
+        Flip_plan unlooked;   // SKIP
+        Flip_plan& plan = batched ? plans[next++] : unlooked;
+        if((batched && o_.threads == 1) || std::any_of(v.begin(), v.end(), [&](int u) { return changed_[u] > start; }))
+          plan = look(t, c);
         make(t, plan, result);
       }
     }
