@@ -104,7 +104,7 @@ static const char* usage =
   "                   changes by at most G per unit length (--grading), and where the size that\n"
   "                   follows the shape is smaller, that one\n"
   "  --cells-across   the size follows the shape: where the domain is thinner than C l* (default\n"
-  "                   C = 1.5; 0: l* everywhere), the edge shrinks so that C cells fit across it,\n"
+  "                   C = 1.25; 0: l* everywhere), the edge shrinks so that C cells fit across it,\n"
   "                   and where a gap is narrower than l*, to the gap; the size changes by at most\n"
   "                   G per unit length (--grading, default 0.3) and is never below H\n"
   "                   (--min-edge-length, default l*/4); --edge-length and --vertices give l*,\n"

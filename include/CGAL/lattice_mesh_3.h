@@ -94,7 +94,7 @@ struct Combined_size_3
 // `grading` G, `min_edge_length` H (0: l*/4).
 struct Shape_sizing_parameters
 {
-  double cells_across = 1.5, surface_tolerance = 0., grading = .3, min_edge_length = 0.;
+  double cells_across = 1.25, surface_tolerance = 0., grading = .3, min_edge_length = 0.;
 
   // throws std::invalid_argument for a value out of range, naming the parameter as `name`
   // spells it (`name("cells_across")`: a named parameter, a command-line option)
@@ -123,7 +123,7 @@ struct Shape_sizing_report
 // p.edge_length (l*, the largest edge): given, or for p.number_of_vertices the l* and the cells
 // across that give about that count. The thin parts' vertices are paid for by the rest: l* may
 // grow by a quarter over its estimate without the shape's size; past that, fewer cells fit
-// across the thin parts (C down to 1.5), and only then does l* grow further.
+// across the thin parts (C down to the default, 1.25), and only then does l* grow further.
 template <typename Traits, typename MeshDomain, typename FrameField, typename UserSize>
 Sized_frame_field_3<FrameField, Combined_size_3<typename MeshDomain::Geom_traits, UserSize> >
 sized_field(const MeshDomain& domain, const FrameField& field, const UserSize& user, internal::Lattice_mesher_parameters& p,
@@ -193,7 +193,7 @@ sized_field(const MeshDomain& domain, const FrameField& field, const UserSize& u
       if(count(size, most) <= n) l = solve(size, estimate, most);
       else {
         l = most;
-        const double fewest = (std::min)(1.5, cells);
+        const double fewest = (std::min)(Shape_sizing_parameters().cells_across, cells);
         if(cells > fewest && count(with(fewest), most) <= n) {   // the count grows with the cells across
           double lo = fewest, hi = cells;
           for(int it = 0; it < 6; ++it) { const double mid = .5 * (lo + hi); (count(with(mid), most) > n ? hi : lo) = mid; }
@@ -335,10 +335,10 @@ them (`tetrahedralize_particles()`).
       C l*, the edge shrinks so that C cells fit across it, and where a gap between two parts is
       narrower than l*, to the gap (`Lattice_mesher_3::thickness_samples()`, `Lattice_mesher_3::size_samples()`);
       with `number_of_vertices`, l* may grow by a quarter over its estimate to pay for the thin parts'
-      vertices, and past that C comes down to 1.5 (if it is above) before l* grows further; 0 keeps l*
+      vertices, and past that C comes down to 1.25 (if it is above) before l* grows further; 0 keeps l*
       everywhere}
     \cgalParamType{double, 0 or at least 1}
-    \cgalParamDefault{1.5}
+    \cgalParamDefault{1.25}
   \cgalParamNEnd
   \cgalParamNBegin{surface_tolerance}
     \cgalParamDescription{the distance epsilon from the surface that boundary facets should keep, as

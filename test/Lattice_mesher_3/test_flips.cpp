@@ -323,39 +323,44 @@ std::set<std::array<Point_3, 3> > boundary_triangles(const LM::Tetrahedral_mesh_
   return faces;
 }
 
-// A BCC lattice on the unit cube (l* = 1/4) with one extra particle near a lattice point.
-LM::Tetrahedral_mesh_3<Point_3> bcc_cube_with_extra(const Point_3& extra, const LM::Constant_frame_field_3<Traits>& field)
+// A BCC lattice on the unit cube (l* = 1/4) with one extra particle (of kind `kind`) near a
+// lattice point.
+LM::Tetrahedral_mesh_3<Point_3> bcc_cube_with_extra(const Point_3& extra, const LM::Constant_frame_field_3<Traits>& field,
+                                                    LM::Particle_kind kind = LM::Particle_kind::FREE)
 {
   LM::Particle_set_3<Point_3> ps = bcc_cube_particles(4);
-  ps.push_back(extra, LM::Particle_kind::FREE);
+  ps.push_back(extra, kind);
   return LM::tetrahedralize_particles(ps, unit_cube(), field);
 }
 
 // The extra particle a fifth of an edge from a cube centre makes the Delaunay tetrahedra around
 // the pair slivers. Contracting their edge gives back a star of lattice quality; nothing else
-// changes.
+// changes. A boundary particle that the tetrahedralization left inside (on no boundary face)
+// goes the same way as a free one.
 TEST(Collapse_edges, RemovesTheExtraVertexOfADefect)
 {
   const LM::Constant_frame_field_3<Traits> field;
-  LM::Tetrahedral_mesh_3<Point_3> mesh = bcc_cube_with_extra(Point_3(.3875, .3825, .4), field);
-  ASSERT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
-  const LM::Tetrahedral_mesh_3<Point_3> original = mesh;
-  const double before = worst_angle(mesh, field);
-  ASSERT_LT(before, 20.);
-  EXPECT_EQ(LM::collapse_edges(mesh, field), 1u);
-  EXPECT_EQ(mesh.points.size(), original.points.size() - 1);
-  const double after = worst_angle(mesh, field);
-  std::cout << "worst angle " << before << " -> " << after << " degrees\n";
-  EXPECT_GE(after, 45. - 1e-9);   // the walls' half pyramids, the lattice mesh's own worst
-  const LM::Mesh_validity_report v = LM::check_tetrahedral_mesh(mesh);
-  EXPECT_TRUE(v.valid()) << v.message;
-  EXPECT_EQ(boundary_triangles(mesh), boundary_triangles(original));
-  // only free vertices go; the others keep their order
-  for(LM::Particle_kind k : { LM::Particle_kind::FIXED, LM::Particle_kind::SHARP_EDGE, LM::Particle_kind::BOUNDARY })
-    EXPECT_EQ(std::count(mesh.vertex_kinds.begin(), mesh.vertex_kinds.end(), k),
-              std::count(original.vertex_kinds.begin(), original.vertex_kinds.end(), k));
-  // a lattice mesh has nothing to contract
-  EXPECT_EQ(LM::collapse_edges(mesh, field), 0u);
+  for(LM::Particle_kind extra : { LM::Particle_kind::FREE, LM::Particle_kind::BOUNDARY }) {
+    LM::Tetrahedral_mesh_3<Point_3> mesh = bcc_cube_with_extra(Point_3(.3875, .3825, .4), field, extra);
+    ASSERT_TRUE(LM::check_tetrahedral_mesh(mesh).valid());
+    const LM::Tetrahedral_mesh_3<Point_3> original = mesh;
+    const double before = worst_angle(mesh, field);
+    ASSERT_LT(before, 20.);
+    EXPECT_EQ(LM::collapse_edges(mesh, field), 1u);
+    EXPECT_EQ(mesh.points.size(), original.points.size() - 1);
+    const double after = worst_angle(mesh, field);
+    std::cout << "worst angle " << before << " -> " << after << " degrees\n";
+    EXPECT_GE(after, 45. - 1e-9);   // the walls' half pyramids, the lattice mesh's own worst
+    const LM::Mesh_validity_report v = LM::check_tetrahedral_mesh(mesh);
+    EXPECT_TRUE(v.valid()) << v.message;
+    EXPECT_EQ(boundary_triangles(mesh), boundary_triangles(original));
+    // only the extra vertex goes; the others keep their kinds and their order
+    for(LM::Particle_kind k : { LM::Particle_kind::FIXED, LM::Particle_kind::SHARP_EDGE, LM::Particle_kind::BOUNDARY, LM::Particle_kind::FREE })
+      EXPECT_EQ(std::count(mesh.vertex_kinds.begin(), mesh.vertex_kinds.end(), k) + (k == extra),
+                std::count(original.vertex_kinds.begin(), original.vertex_kinds.end(), k));
+    // a lattice mesh has nothing to contract
+    EXPECT_EQ(LM::collapse_edges(mesh, field), 0u);
+  }
 }
 
 // A free particle on the boundary (as where a tetrahedralization exposes one) is a vertex of

@@ -225,8 +225,8 @@ TEST(Lattice_mesh_3, SizeFieldGradesTheMesh)
   }
 }
 
-// A slab 0.3 thick under l* = 0.5: with the size that follows the shape (the default, 1.5 cells
-// across) the edge shrinks to 0.2 in it, and vertices fill its middle layer; with
+// A slab 0.3 thick under l* = 0.5: with the size that follows the shape (the default, 1.25 cells
+// across) the edge shrinks to 0.24 in it, and vertices fill its middle layer; with
 // cells_across(0) the lattice of l* has no room for one, and keeps to the two faces.
 TEST(Lattice_mesh_3, SizeFollowsAThinPartByDefault)
 {
@@ -251,7 +251,7 @@ TEST(Lattice_mesh_3, SizeFollowsAThinPartByDefault)
   const LM::Mesh_quality_3 q = LM::compute_mesh_quality(sized, field, CGAL::parameters::lattice(LM::make_lattice(LM::Lattice_type::BCC)));
   std::cout << sized.points.size() << " vertices, " << middle(sized) << " in the middle layer, smallest angle "
             << q.theta_min.min << "; cells_across(0): " << uniform.points.size() << ", " << middle(uniform) << "\n";
-  // the middle layer of a BCC lattice of edge 0.2 over 2 x 2: about (2 / 0.2)^2 = 100 vertices
+  // the middle layer of a BCC lattice of edge 0.24 over 2 x 2: about (2 / 0.24)^2 = 69 vertices
   EXPECT_GT(middle(sized), 50u);
   EXPECT_EQ(middle(uniform), 0u);
   EXPECT_GE(q.theta_min.min, 10.);

@@ -145,12 +145,14 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
   auto corners = [&](const std::array<int, 4>& t) {
     return Corners{ mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], mesh.points[t[3]] };
   };
-  // interior vertices only: the link of a vertex of a boundary face is not a sphere, and a free
-  // particle may lie on the boundary where the tetrahedralization exposed it
-  std::vector<char> interior(mesh.points.size(), 0);
-  for(std::size_t v = 0; v < mesh.points.size(); ++v) interior[v] = mesh.vertex_kinds[v] == Particle_kind::FREE;
+  // Vertices on no boundary face go: the link of a vertex of a boundary face is not a sphere, and
+  // a free particle may lie on the boundary where the tetrahedralization exposed it; a boundary
+  // particle it left inside (femur: 0.12 l* from another, in a star of four) goes too. Only free
+  // ones move, since the others are held to the surface.
+  std::vector<char> inside(mesh.points.size(), 1), interior(mesh.points.size(), 0);
   for(const std::array<int, 3>& f : mesh.boundary_faces)
-    for(int v : f) interior[v] = 0;
+    for(int v : f) inside[v] = 0;
+  for(std::size_t v = 0; v < mesh.points.size(); ++v) interior[v] = inside[v] && mesh.vertex_kinds[v] == Particle_kind::FREE;
   // boundary faces at each vertex, and the boundary vertices that may go
   std::vector<std::vector<int> > faces_at(mesh.points.size());
   for(std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
@@ -270,9 +272,9 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
              internal::link_condition(a, b, star[a], star[b], faces_at[a], faces_at[b], mesh.tets, mesh.boundary_faces);
     };
     for(int a : t) {
-      if(!interior[a] && !(at_boundary && !faces_at[a].empty())) continue;
+      if(!inside[a] && !(at_boundary && !faces_at[a].empty())) continue;
       for(int b : t) {
-        if(b == a || (!interior[a] && !boundary_merge(a, b))) continue;
+        if(b == a || (!inside[a] && !boundary_merge(a, b))) continue;
         Score before{ 180., 0 };
         for(int v : { a, b })
           for(int s : star[v])
@@ -337,9 +339,10 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
 Removes vertices at the worst tetrahedra by contracting one of their edges. Where a lattice
 defect (a dislocation of a rotating field, an extra particle where the lattice meets a curved
 boundary) leaves a cluster of bad tetrahedra sharing their vertices, neither a flip nor a move of
-one vertex raises the worst of them; removing the extra vertex can. An interior vertex `a` of a
-tetrahedron below `floor_angle` is merged into another vertex `b` of it: the tetrahedra around
-the edge go, the others of `a`'s star become cones from `b` over `a`'s link. An interior `b` is
+one vertex raises the worst of them; removing the extra vertex can. A vertex `a` of a
+tetrahedron below `floor_angle` that is on no boundary face (a free particle, or a boundary one
+that the tetrahedralization left inside) is merged into another vertex `b` of it: the tetrahedra around
+the edge go, the others of `a`'s star become cones from `b` over `a`'s link. A free `b` inside is
 then placed where the smallest angle of its new star is largest (the pattern search of
 `smooth_vertices()` over the axis and diagonal directions, from `b` or the edge's midpoint); a boundary, sharp-edge or fixed `b` stays, so the boundary does not change. A
 contraction is made only if every tetrahedron of the new star is positively oriented (exact
