@@ -149,10 +149,9 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
   // a free particle may lie on the boundary where the tetrahedralization exposed it; a boundary
   // particle it left inside (femur: 0.12 l* from another, in a star of four) goes too. Only free
   // ones move, since the others are held to the surface.
-  std::vector<char> inside(mesh.points.size(), 1), interior(mesh.points.size(), 0);
+  std::vector<char> inside(mesh.points.size(), 1);
   for(const std::array<int, 3>& f : mesh.boundary_faces)
     for(int v : f) inside[v] = 0;
-  for(std::size_t v = 0; v < mesh.points.size(); ++v) interior[v] = inside[v] && mesh.vertex_kinds[v] == Particle_kind::FREE;
   // boundary faces at each vertex, and the boundary vertices that may go
   std::vector<std::vector<int> > faces_at(mesh.points.size());
   for(std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
@@ -213,7 +212,7 @@ std::size_t collapse_edges(Tetrahedral_mesh_3<Point_3>& mesh, const FrameField& 
     merged_star(a, b, st);
     at = mesh.points[b];
     Score best = score(st, at, unbounded);
-    if(!interior[b]) return best;
+    if(!inside[b] || mesh.vertex_kinds[b] != Particle_kind::FREE) return best;
     const Point_3 mid = CGAL::midpoint(mesh.points[a], mesh.points[b]);
     const Score m = score(st, mid, best);
     if(better(m, best)) { best = m; at = mid; }
