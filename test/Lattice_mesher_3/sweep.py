@@ -149,7 +149,7 @@ def check_mesh(path):
 
 
 def run_model(args, model):
-    name = os.path.splitext(os.path.basename(model))[0]
+    name = os.path.basename(model)   # whole name: sphere.off, .ply and .stl run in different shards
     out_mesh = os.path.join(args.out, name + '.mesh')
     out_stats = os.path.join(args.out, name + '.json')
     for f in (out_mesh, out_stats):
