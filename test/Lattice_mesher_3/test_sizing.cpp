@@ -152,6 +152,37 @@ TEST(Sizing, GapBetweenParts)
   EXPECT_GT(facing, 50);
 }
 
+// Two feature curves 0.2 apart on the top face of a cube of side 4 (as scribed lines, given as
+// curves) ask for an edge of 0.2 between them; the cube's own sharp edges, which meet at right
+// angles and lie 4 apart, ask for nothing; nor do two such curves shorter than the reach, nor two
+// curves 0.14 apart across the cube's edge, with no face between them.
+TEST(Sizing, GapBetweenFeatureCurves)
+{
+  typedef LM::Polyhedral_lattice_domain_3<K> Domain;
+  const Domain::Surface_mesh cube = LM::make_cube_surface_3<K>(0., 4.);
+  std::vector<std::pair<Point_3, double> > samples;
+  LM::feature_gap_size_samples(Domain(cube), .25, 1., std::back_inserter(samples), 2);
+  EXPECT_TRUE(samples.empty()) << samples.size() << " samples, the first at " << samples.front().first;
+  const std::vector<Domain::Polyline> lines = { { Point_3(1., .5, 4.), Point_3(1., 3.5, 4.) },
+                                                { Point_3(1.2, .5, 4.), Point_3(1.2, 3.5, 4.) } };
+  LM::feature_gap_size_samples(Domain(cube, lines), .25, 1., std::back_inserter(samples), 2);
+  EXPECT_GT(samples.size(), 30u);
+  for(const auto& s : samples) {
+    EXPECT_NEAR(s.second, .2, 1e-9) << s.first;
+    EXPECT_TRUE(s.first.x() > 1. - 1e-9 && s.first.x() < 1.2 + 1e-9 && std::abs(s.first.z() - 4.) < 1e-9) << s.first;
+  }
+  const std::vector<Domain::Polyline> short_lines = { { Point_3(1., .5, 4.), Point_3(1., 1.2, 4.) },
+                                                      { Point_3(1.2, .5, 4.), Point_3(1.2, 1.2, 4.) } };
+  samples.clear();
+  LM::feature_gap_size_samples(Domain(cube, short_lines), .25, 1., std::back_inserter(samples), 2);
+  EXPECT_TRUE(samples.empty()) << samples.size() << " samples";
+  const std::vector<Domain::Polyline> across = { { Point_3(3.9, .5, 4.), Point_3(3.9, 3.5, 4.) },
+                                                 { Point_3(4., .5, 3.9), Point_3(4., 3.5, 3.9) } };
+  LM::feature_gap_size_samples(Domain(cube, across), .25, 1., std::back_inserter(samples), 2);
+  EXPECT_TRUE(samples.empty()) << samples.size() << " samples";
+  EXPECT_THROW(LM::feature_gap_size_samples(Domain(cube, lines), 0., 1., std::back_inserter(samples)), std::invalid_argument);
+}
+
 // The unit sphere leaves its tangent plane by sqrt(1 + L^2) - 1 at distance L; the tolerance's
 // size is where that is the tolerance, sqrt(2 e) to first order.
 TEST(Sizing, DeviationOfASphere)

@@ -20,6 +20,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
+#include <set>
 #include <memory>
 #include <queue>
 #include <stdexcept>
@@ -379,6 +381,95 @@ OutputIterator size_samples(const std::vector<Thickness_sample_3<K> >& measures,
     if(m.thickness >= 0.)
       for(double t = .5 * h; t <= .5 * m.thickness; t += .5 * h) *out++ = std::make_pair(m.point - t * m.normal, h);
   }
+  return out;
+}
+
+/*!
+\ingroup PkgLatticeMesher3Sizing
+
+Writes one cell across each gap between two feature curves (the narrow face between two sharp
+edges, two curves meeting at an acute angle): at points of the curves about `spacing` apart (the
+surface samples within `spacing / 2` of a curve, projected onto it), the distance d to the nearest
+point of each other curve closer than `reach`, where the segment between them makes at least 60
+degrees with the tangents of both curves (so that curves meeting at a corner at 60 degrees or
+more do not count near it). The size d is written at both ends and every d / 2 between them.
+Only a face between the curves counts (the segment's midpoint within d / 4 of the surface): two
+curves facing each other across the volume or a gap are the business of `thickness_samples()`.
+Curves whose points span less than `reach` do not count: a crease shorter than the edge (the
+noise of a scanned surface, classified as sharp) gets no particle between its ends.
+`threads` OpenMP threads share the points.
+
+These sizes are not part of the size that `CGAL::lattice_mesh_3()` builds by default (the manual's
+Design chapter, "Every Surface of libcgal-demo", gives why); a `Graded_sizing_field_3` of them goes
+to it as the named parameter `size_field`.
+\returns the output iterator, past the `std::pair<Point_3, double>` written
+
+\tparam MeshDomain a model of `LatticeMeshDomain_3`
+*/
+template <typename MeshDomain, typename OutputIterator>
+OutputIterator feature_gap_size_samples(const MeshDomain& domain, double spacing, double reach, OutputIterator out,
+                                        int threads = 1)
+{
+  typedef typename MeshDomain::Geom_traits K;
+  typedef typename K::Point_3 Point_3;
+  typedef typename K::Vector_3 Vector_3;
+  if(!(spacing > 0.) || !(reach > 0.))
+    throw std::invalid_argument("feature_gap_size_samples(): the spacing and the reach must be positive");
+  const std::size_t curves = domain.number_of_curves();
+  if(curves < 2) return out;
+  std::vector<Point_3> surface;
+  domain.sample_surface(spacing, std::back_inserter(surface));
+  struct Curve_point { Point_3 point; Vector_3 tangent; std::size_t curve; };
+  std::vector<Curve_point> points;
+  for(const Point_3& p : surface) {
+    const auto c = domain.project_on_features(p);
+    if(c.index >= 0 && c.squared_distance < .25 * spacing * spacing) points.push_back({ c.point, c.direction, std::size_t(c.index) });
+  }
+  std::vector<Bbox_3> extent(curves);
+  for(const Curve_point& a : points) extent[a.curve] += a.point.bbox();
+  auto short_curve = [&](std::size_t curve) {
+    const Bbox_3& b = extent[curve];
+    const double dx = b.xmax() - b.xmin(), dy = b.ymax() - b.ymin(), dz = b.zmax() - b.zmin();
+    return b.xmax() < b.xmin() || dx * dx + dy * dy + dz * dz < reach * reach;
+  };
+  points.erase(std::remove_if(points.begin(), points.end(), [&](const Curve_point& a) { return short_curve(a.curve); }), points.end());
+  // the points by cell of a grid of side `reach`: the other curves within reach are in the 27 cells around
+  typedef std::array<long long, 3> Cell;
+  auto cell_of = [&](const Point_3& p) {
+    return Cell{ (long long)std::floor(CGAL::to_double(p.x()) / reach), (long long)std::floor(CGAL::to_double(p.y()) / reach),
+                 (long long)std::floor(CGAL::to_double(p.z()) / reach) };
+  };
+  std::map<Cell, std::vector<std::size_t> > grid;
+  for(std::size_t i = 0; i < points.size(); ++i) grid[cell_of(points[i].point)].push_back(i);
+  std::vector<std::vector<std::pair<Point_3, double> > > written(points.size());
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
+  for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(points.size()); ++i) {
+    const Curve_point& a = points[std::size_t(i)];
+    std::set<std::size_t> near;   // the other curves within reach
+    const Cell c = cell_of(a.point);
+    for(long long dx = -1; dx <= 1; ++dx)
+      for(long long dy = -1; dy <= 1; ++dy)
+        for(long long dz = -1; dz <= 1; ++dz) {
+          const auto it = grid.find(Cell{ c[0] + dx, c[1] + dy, c[2] + dz });
+          if(it == grid.end()) continue;
+          for(std::size_t j : it->second)
+            if(points[j].curve != a.curve && (points[j].point - a.point).squared_length() < reach * reach)
+              near.insert(points[j].curve);
+        }
+    for(std::size_t other : near) {
+      const auto q = domain.project_on_curve(a.point, other);
+      const double d = std::sqrt(q.squared_distance);
+      if(!(d > 0.) || !(d < reach)) continue;
+      const Vector_3 u = (q.point - a.point) / d;
+      if(std::abs(u * a.tangent) > .5 || std::abs(u * q.direction) > .5) continue;   // within 60 degrees of a tangent
+      // a face between them (its chord's midpoint on the surface), not a part or a gap across the volume
+      if(domain.project_on_surface(a.point + .5 * (q.point - a.point)).squared_distance > .0625 * d * d) continue;
+      for(double t = 0.; t < d + .25 * d; t += .5 * d)
+        written[std::size_t(i)].emplace_back(a.point + (std::min)(t, d) * u, d);
+    }
+  }
+  for(const auto& w : written)
+    for(const auto& sample : w) *out++ = sample;
   return out;
 }
 
