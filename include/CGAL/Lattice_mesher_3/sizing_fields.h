@@ -11,6 +11,7 @@
 #define CGAL_LATTICE_MESHER_3_SIZING_FIELDS_H
 
 #include <CGAL/Lattice_mesher_traits_3.h>
+#include <CGAL/Lattice_mesher_3/internal/particle_neighbors.h>
 #include <CGAL/Bbox_3.h>
 
 #include <Eigen/Dense>
@@ -20,7 +21,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <set>
 #include <memory>
 #include <queue>
@@ -433,29 +433,18 @@ OutputIterator feature_gap_size_samples(const MeshDomain& domain, double spacing
     return b.xmax() < b.xmin() || dx * dx + dy * dy + dz * dz < reach * reach;
   };
   points.erase(std::remove_if(points.begin(), points.end(), [&](const Curve_point& a) { return short_curve(a.curve); }), points.end());
-  // the points by cell of a grid of side `reach`: the other curves within reach are in the 27 cells around
-  typedef std::array<long long, 3> Cell;
-  auto cell_of = [&](const Point_3& p) {
-    return Cell{ (long long)std::floor(CGAL::to_double(p.x()) / reach), (long long)std::floor(CGAL::to_double(p.y()) / reach),
-                 (long long)std::floor(CGAL::to_double(p.z()) / reach) };
-  };
-  std::map<Cell, std::vector<std::size_t> > grid;
-  for(std::size_t i = 0; i < points.size(); ++i) grid[cell_of(points[i].point)].push_back(i);
+  // the other curves within reach are among the points of the 27 grid cells of side `reach` around
+  internal::Hash_grid_3 grid(reach);
+  for(std::size_t i = 0; i < points.size(); ++i) grid.insert(internal::to_eigen(points[i].point), int(i));
   std::vector<std::vector<std::pair<Point_3, double> > > written(points.size());
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
   for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(points.size()); ++i) {
     const Curve_point& a = points[std::size_t(i)];
+    const internal::Vec3 x = internal::to_eigen(a.point);
     std::set<std::size_t> near;   // the other curves within reach
-    const Cell c = cell_of(a.point);
-    for(long long dx = -1; dx <= 1; ++dx)
-      for(long long dy = -1; dy <= 1; ++dy)
-        for(long long dz = -1; dz <= 1; ++dz) {
-          const auto it = grid.find(Cell{ c[0] + dx, c[1] + dy, c[2] + dz });
-          if(it == grid.end()) continue;
-          for(std::size_t j : it->second)
-            if(points[j].curve != a.curve && (points[j].point - a.point).squared_length() < reach * reach)
-              near.insert(points[j].curve);
-        }
+    grid.for_each_near(x, [&](const internal::Vec3& y, int j) {
+      if(points[std::size_t(j)].curve != a.curve && (y - x).squaredNorm() < reach * reach) near.insert(points[std::size_t(j)].curve);
+    });
     for(std::size_t other : near) {
       const auto q = domain.project_on_curve(a.point, other);
       const double d = std::sqrt(q.squared_distance);
