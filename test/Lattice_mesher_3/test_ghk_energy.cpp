@@ -666,4 +666,52 @@ TEST(Total_energy_threads, bitwise_identical_with_1_and_2_threads)
     }
 }
 
+// The grid of Point_search_3 answers as a scan of all points: random points in a box, on a plane
+// (a grid of about one cell in z), clustered at one corner (most cells empty, one crowded), and
+// with duplicates (ties: the lowest index); queries inside, on the points and far outside.
+TEST(Point_search, answers_as_a_scan_of_all_points)
+{
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0., 1.);
+  for(int set = 0; set < 4; ++set) {
+    std::vector<Point_3> points;
+    for(int i = 0; i < 3000; ++i) {
+      Vec3 p(u(rng), u(rng), u(rng));
+      if(set == 1) p[2] = 0.5;
+      if(set == 2 && i % 10 != 0) p *= 1e-3;
+      if(set == 3 && i >= 1500) p = LMI::to_eigen(points[std::size_t(i - 1500)]);
+      points.emplace_back(p[0], p[1], p[2]);
+    }
+    const LMI::Point_search_3<K> search(points);
+    ASSERT_EQ(search.size(), points.size());
+    for(int q = 0; q < 300; ++q) {
+      Vec3 c = q % 3 == 0 ? Vec3(4. * u(rng) - 1.5, 4. * u(rng) - 1.5, 40. * u(rng) - 20.) : Vec3(u(rng), u(rng), u(rng));
+      if(q % 7 == 0) c = LMI::to_eigen(points[std::size_t(q)]);
+      const double radius = 0.2 * u(rng);
+      const Vec3 half(0.1 * u(rng), 0.1 * u(rng), 0.1 * u(rng));
+      std::vector<std::size_t> ball, box, expected_ball, expected_box;
+      search.in_sphere(Point_3(c[0], c[1], c[2]), radius, ball);
+      search.in_box_or_sphere(c, half, 10., box);   // the box, smaller than the ball
+      std::size_t nearest = 0;
+      for(std::size_t i = 0; i < points.size(); ++i) {
+        const Vec3 p = LMI::to_eigen(points[i]);
+        if((p - c).squaredNorm() <= radius * radius) expected_ball.push_back(i);
+        if(((p - c).cwiseAbs() - half).maxCoeff() <= 0.) expected_box.push_back(i);
+        if((p - c).squaredNorm() < (LMI::to_eigen(points[nearest]) - c).squaredNorm()) nearest = i;
+      }
+      std::sort(ball.begin(), ball.end());
+      std::sort(box.begin(), box.end());
+      EXPECT_EQ(ball, expected_ball) << "set " << set << " query " << q;
+      EXPECT_EQ(box, expected_box) << "set " << set << " query " << q;
+      const std::pair<std::size_t, double> found = search.nearest(Point_3(c[0], c[1], c[2]));
+      EXPECT_EQ(found.first, nearest) << "set " << set << " query " << q;
+      EXPECT_EQ(found.second, (LMI::to_eigen(points[nearest]) - c).squaredNorm());
+    }
+  }
+  const LMI::Point_search_3<K> empty{ std::vector<Point_3>() };
+  std::vector<std::size_t> none;
+  empty.in_sphere(Point_3(0., 0., 0.), 1., none);
+  EXPECT_TRUE(none.empty());
+}
+
 } // namespace

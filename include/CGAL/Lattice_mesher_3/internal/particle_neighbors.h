@@ -12,21 +12,14 @@
 
 #include <CGAL/Lattice_mesher_3/frame_fields.h>
 
-#include <CGAL/Fuzzy_iso_box.h>
-#include <CGAL/Fuzzy_sphere.h>
-#include <CGAL/Kd_tree.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <CGAL/property_map.h>
 
 #include <boost/container/vector.hpp>
-#include <boost/iterator/counting_iterator.hpp>
 #include <Eigen/Dense>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 #include <vector>
 
@@ -45,33 +38,49 @@ std::vector<Vec3> to_vectors(const std::vector<Point_3>& points)
   return x;
 }
 
-// k-d tree over a fixed array of points, answering queries by index.
+// A fixed array of points answering range and nearest-point queries by index: a uniform grid of
+// cells 1.5 times the mean spacing over the bounding box, the points sorted by cell. Particles
+// fill their domain, so a query's few cells hold about the points it asks for; it answers the
+// range queries of the insertion, deletion and neighbour graphs in less time than a k-d tree.
 template <typename K>
 class Point_search_3
 {
   typedef typename K::Point_3 Point_3;
-  typedef typename CGAL::Pointer_property_map<Point_3>::const_type Point_map;
-  typedef CGAL::Search_traits_3<K> Base_traits;
-  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Base_traits> Traits;
-  typedef CGAL::Kd_tree<Traits> Tree;
-  typedef CGAL::Fuzzy_sphere<Traits> Sphere;
-  typedef CGAL::Fuzzy_iso_box<Traits> Box;
-  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Knn;
 
 public:
   explicit Point_search_3(const std::vector<Point_3>& points)
-    : points_(points),
-      tree_(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(points.size()),
-            typename Tree::Splitter(), Traits(Point_map(points_.data())))
   {
-    tree_.build();   // before any concurrent query
+    const std::size_t n = points.size();
+    if(n == 0) return;
+    std::vector<Vec3> x = to_vectors(points);
+    Vec3 hi = x[0];
+    lo_ = x[0];
+    for(const Vec3& p : x) { lo_ = lo_.cwiseMin(p); hi = hi.cwiseMax(p); }
+    const Vec3 span = (hi - lo_).cwiseMax(1e-300);
+    cell_ = (std::max)(1.5 * std::cbrt(span.prod() / double(n)), span.maxCoeff() / 1024.);
+    for(;;) {   // at most 4 n + 64 cells, for points about on a plane or a line
+      for(int a = 0; a < 3; ++a) dims_[a] = long(span[a] / cell_) + 1;
+      if(double(dims_[0]) * double(dims_[1]) * double(dims_[2]) <= 4. * double(n) + 64.) break;
+      cell_ *= 1.25;
+    }
+    std::vector<std::size_t> key(n);
+    start_.assign(std::size_t(dims_[0] * dims_[1] * dims_[2]) + 1, 0);
+    for(std::size_t i = 0; i < n; ++i) { key[i] = index(coord(x[i])); ++start_[key[i] + 1]; }
+    for(std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    order_.resize(n);
+    for(std::size_t i = 0; i < n; ++i) order_[fill[key[i]]++] = i;
+    sorted_.resize(n);
+    for(std::size_t k = 0; k < n; ++k) sorted_[k] = x[order_[k]];
   }
 
   /// appends the indices of the points within Euclidean distance `radius` of `c`
   void in_sphere(const Point_3& c, double radius, std::vector<std::size_t>& out) const
   {
-    if(points_.empty()) return;
-    tree_.search(std::back_inserter(out), Sphere(c, radius, 0., tree_.traits()));
+    const Vec3 q = to_eigen(c);
+    scan(coord(q - Vec3::Constant(radius)), coord(q + Vec3::Constant(radius)), [&](std::size_t k) {
+      if((sorted_[k] - q).squaredNorm() <= radius * radius) out.push_back(order_[k]);
+    });
   }
 
   /// appends the indices of the points in the axis-aligned box `c` +- `half` or in the ball of
@@ -79,26 +88,72 @@ public:
   /// ball, 5 times smaller than its box, under a rotation)
   void in_box_or_sphere(const Vec3& c, const Vec3& half, double radius, std::vector<std::size_t>& out) const
   {
-    if(points_.empty()) return;
-    const Point_3 center(c[0], c[1], c[2]);
     if(8. * half[0] * half[1] * half[2] > 4.19 * radius * radius * radius)
-      return in_sphere(center, radius, out);
-    const Point_3 lo(c[0] - half[0], c[1] - half[1], c[2] - half[2]), hi(c[0] + half[0], c[1] + half[1], c[2] + half[2]);
-    tree_.search(std::back_inserter(out), Box(lo, hi, 0., tree_.traits()));
+      return in_sphere(Point_3(c[0], c[1], c[2]), radius, out);
+    scan(coord(c - half), coord(c + half), [&](std::size_t k) {
+      if(((sorted_[k] - c).cwiseAbs() - half).maxCoeff() <= 0.) out.push_back(order_[k]);
+    });
   }
 
-  /// index of the nearest point, and its squared distance
+  /// index of the nearest point (the lowest index among equally near ones), and its squared
+  /// distance: the cells ring by ring around the query's, until the next ring is farther
   std::pair<std::size_t, double> nearest(const Point_3& c) const
   {
-    Knn search(tree_, c, 1, 0., true, typename Knn::Distance(tree_.traits().point_property_map()));
-    return { search.begin()->first, search.begin()->second };
+    const Vec3 q = to_eigen(c);
+    const std::array<long, 3> o = coord(q);
+    std::pair<std::size_t, double> best((std::numeric_limits<std::size_t>::max)(), HUGE_VAL);
+    auto visit = [&](std::size_t k) {
+      const double d = (sorted_[k] - q).squaredNorm();
+      if(d < best.second || (d == best.second && order_[k] < best.first)) best = { order_[k], d };
+    };
+    const long rings = (std::max)({ dims_[0], dims_[1], dims_[2] });
+    for(long r = 0; r <= rings; ++r) {
+      // the ring's two faces normal to x, then to y within them, then to z within both
+      for(long side : { -r, r }) {
+        scan({ o[0] + side, o[1] - r, o[2] - r }, { o[0] + side, o[1] + r, o[2] + r }, visit);
+        if(r > 0) {
+          scan({ o[0] - r + 1, o[1] + side, o[2] - r }, { o[0] + r - 1, o[1] + side, o[2] + r }, visit);
+          scan({ o[0] - r + 1, o[1] - r + 1, o[2] + side }, { o[0] + r - 1, o[1] + r - 1, o[2] + side }, visit);
+        }
+        if(r == 0) break;
+      }
+      // points beyond this ring are at least r cells away (from the query clamped to the grid)
+      if(best.second <= double(r) * cell_ * double(r) * cell_) break;
+    }
+    return best;
   }
 
-  std::size_t size() const { return points_.size(); }
+  std::size_t size() const { return sorted_.size(); }
 
 private:
-  std::vector<Point_3> points_;
-  Tree tree_;
+  std::array<long, 3> coord(const Vec3& p) const
+  {
+    std::array<long, 3> c;
+    for(int a = 0; a < 3; ++a) {
+      const double t = std::floor((p[a] - lo_[a]) / cell_);
+      c[a] = t < 0. ? 0L : t >= double(dims_[a]) ? dims_[a] - 1 : long(t);
+    }
+    return c;
+  }
+  std::size_t index(const std::array<long, 3>& c) const { return std::size_t((c[0] * dims_[1] + c[1]) * dims_[2] + c[2]); }
+
+  // calls f on the sorted positions of the points in the cells a..b (clipped to the grid)
+  template <typename F>
+  void scan(std::array<long, 3> a, std::array<long, 3> b, F f) const
+  {
+    if(sorted_.empty()) return;
+    for(int i = 0; i < 3; ++i) { a[i] = (std::max)(a[i], 0L); b[i] = (std::min)(b[i], dims_[i] - 1); if(a[i] > b[i]) return; }
+    for(long i = a[0]; i <= b[0]; ++i)
+      for(long j = a[1]; j <= b[1]; ++j)
+        for(std::size_t k = start_[index({ i, j, a[2] })], end = start_[index({ i, j, b[2] }) + 1]; k < end; ++k) f(k);
+  }
+
+  std::vector<Vec3> sorted_;          // the points, by cell
+  std::vector<std::size_t> order_;    // their indices
+  std::vector<std::size_t> start_;    // the first position of each cell, and the end
+  Vec3 lo_ = Vec3::Zero();
+  double cell_ = 1.;
+  long dims_[3] = { 1, 1, 1 };
 };
 
 // Half-widths of the axis-aligned box around the isotropic ball of radius r under the frame T
