@@ -67,8 +67,8 @@ inline std::ostream& print_box(std::ostream& os, const CGAL::Bbox_3& b)
 \ingroup PkgLatticeMesher3FrameFields
 A frame field known at samples: points with a frame each, or the vertices of a tetrahedral mesh.
 
-- Samples alone: `frame(p)` is the frame of the sample nearest to `p`, found in a k-d tree (the
-  paper's discrete field).
+- Samples alone: `frame(p)` is the frame of the sample nearest to `p` (the lowest index among
+  equally near ones), found in a grid of cells (the paper's discrete field).
 - The vertices of a tetrahedral mesh: `frame(p)` interpolates the frames of the tetrahedron that
   contains `p` (the nearest one for a point outside the mesh) and stays a frame of the same kind
   between the samples: each frame T = R S is split into a rotation R and a stretch S (polar
