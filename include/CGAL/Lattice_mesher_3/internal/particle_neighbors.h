@@ -12,7 +12,6 @@
 
 #include <CGAL/Lattice_mesher_3/frame_fields.h>
 
-
 #include <boost/container/vector.hpp>
 #include <Eigen/Dense>
 
