@@ -397,7 +397,7 @@ public:
       // the first random point that no particle covers seeds the next grain
       const std::vector<Lattice_mesher_3::internal::Vec3> x = Lattice_mesher_3::internal::to_vectors(particles_.points);
       const Lattice_mesher_3::internal::Particle_frames frames = Lattice_mesher_3::internal::compute_particle_frames<K>(x, field_, p_.threads);
-      const Lattice_mesher_3::internal::Point_search_3<K> search(particles_.points);
+      const Lattice_mesher_3::internal::Point_search_3<K> search(x);
       std::vector<std::size_t> near;
       bool seeded = false;
       for(std::size_t k = 0; k < 2 * n + 64 && !seeded && sample(p); ++k) {

@@ -110,7 +110,7 @@ std::size_t insert_candidates(Particle_set_3<Point_3>& ps, const Domain& domain,
 
   const std::vector<Vec3> x = internal::to_vectors(ps.points);
   const internal::Particle_frames frames = internal::compute_particle_frames<K>(x, field, o.threads);
-  const internal::Point_search_3<K> search(ps.points);
+  const internal::Point_search_3<K> search(x);
   const double reach = 1.1 * frames.max_stretch;   // Euclidean radius per unit isotropic radius (grids)
 
   // only the candidates that may be accepted are kept (a few percent), each with its index
@@ -262,7 +262,7 @@ std::size_t insert_feature_particles(Particle_set_3<Point_3>& ps, const Domain& 
   const double l = o.edge_length, lc = lattice.closest_distance * l;
   const std::vector<Vec3> x = internal::to_vectors(ps.points);
   const internal::Particle_frames frames = internal::compute_particle_frames<K>(x, field, o.threads);
-  const internal::Point_search_3<K> search(ps.points);
+  const internal::Point_search_3<K> search(x);
   internal::Hash_grid_3 accepted(0.75 * lc * 1.1 * frames.max_stretch);
   std::vector<std::size_t> near;
   std::size_t inserted = 0;

@@ -433,18 +433,17 @@ OutputIterator feature_gap_size_samples(const MeshDomain& domain, double spacing
     return b.xmax() < b.xmin() || dx * dx + dy * dy + dz * dz < reach * reach;
   };
   points.erase(std::remove_if(points.begin(), points.end(), [&](const Curve_point& a) { return short_curve(a.curve); }), points.end());
-  // the other curves within reach are among the points of the 27 grid cells of side `reach` around
-  internal::Hash_grid_3 grid(reach);
-  for(std::size_t i = 0; i < points.size(); ++i) grid.insert(internal::to_eigen(points[i].point), int(i));
+  std::vector<Point_3> located;
+  for(const Curve_point& a : points) located.push_back(a.point);
+  const internal::Point_search_3<K> search(located);
   std::vector<std::vector<std::pair<Point_3, double> > > written(points.size());
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
   for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(points.size()); ++i) {
     const Curve_point& a = points[std::size_t(i)];
-    const internal::Vec3 x = internal::to_eigen(a.point);
+    std::vector<std::size_t> within;
+    search.in_sphere(a.point, reach, within);
     std::set<std::size_t> near;   // the other curves within reach
-    grid.for_each_near(x, [&](const internal::Vec3& y, int j) {
-      if(points[std::size_t(j)].curve != a.curve && (y - x).squaredNorm() < reach * reach) near.insert(points[std::size_t(j)].curve);
-    });
+    for(std::size_t j : within) if(points[j].curve != a.curve) near.insert(points[j].curve);
     for(std::size_t other : near) {
       const auto q = domain.project_on_curve(a.point, other);
       const double d = std::sqrt(q.squared_distance);

@@ -47,11 +47,12 @@ class Point_search_3
   typedef typename K::Point_3 Point_3;
 
 public:
-  explicit Point_search_3(const std::vector<Point_3>& points)
+  explicit Point_search_3(const std::vector<Point_3>& points) : Point_search_3(to_vectors(points)) {}
+
+  explicit Point_search_3(const std::vector<Vec3>& x)
   {
-    const std::size_t n = points.size();
+    const std::size_t n = x.size();
     if(n == 0) return;
-    std::vector<Vec3> x = to_vectors(points);
     Vec3 hi = x[0];
     lo_ = x[0];
     for(const Vec3& p : x) { lo_ = lo_.cwiseMin(p); hi = hi.cwiseMax(p); }
@@ -303,9 +304,7 @@ Neighbor_graph build_neighbor_graph(const std::vector<Vec3>& x, const Particle_f
 {
   typedef typename K::Point_3 Point_3;
   const std::size_t n = x.size();
-  std::vector<Point_3> pts(n);
-  for(std::size_t i = 0; i < n; ++i) pts[i] = Point_3(x[i][0], x[i][1], x[i][2]);
-  const Point_search_3<K> search(pts);
+  const Point_search_3<K> search(x);
 
   // Each particle finds candidates in the search region of its isotropic ball; a pair is kept
   // if either finds the other and |B_ij v| <= iso_radius, its B evaluated once, by the smaller
