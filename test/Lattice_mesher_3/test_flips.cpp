@@ -494,3 +494,37 @@ TEST(Peel_boundary_slivers, RemovesFlatBoundarySliversOnly)
   EXPECT_EQ(half.points.size(), 4u);
   EXPECT_EQ(half.tets.size(), 1u);
 }
+
+// A flat sliver T = (a, b, c, d) between two tetrahedra X and Y that meet it on its faces acd and
+// bcd and share only the edge cd with each other: without T, cd would be in four boundary faces
+// and c, d pinched. T stays; a sliver that may go, in a capped pyramid beside it, goes.
+TEST(Peel_boundary_slivers, KeepsThoseWhoseRemovalWouldPinchTheBoundary)
+{
+  const LM::Constant_frame_field_3<Traits> field;
+  LM::Tetrahedral_mesh_3<Point_3> mesh = capped_pyramid(.02);   // vertices 0-4
+  for(Point_3& p : mesh.points) p = Point_3(p.x() + 5., p.y(), p.z());
+  const int a = 5, b = 6, c = 7, d = 8, x = 9, y = 10;
+  for(const Point_3& p : { Point_3(0, 0, 0), Point_3(1, 1, 0), Point_3(1, 0, .02), Point_3(0, 1, .02), Point_3(.2, .2, 1), Point_3(.8, .8, 1) })
+    mesh.points.push_back(p);
+  const std::array<int, 4> sliver = positive(mesh.points, { a, b, c, d });
+  for(const std::array<int, 4>& t : { sliver, positive(mesh.points, { a, c, d, x }), positive(mesh.points, { b, c, d, y }) })
+    mesh.tets.push_back(t);
+  mesh.boundary_faces = LM::internal::one_tet_faces(mesh.tets);
+  ASSERT_TRUE(LM::check_tetrahedral_mesh(mesh).valid()) << LM::check_tetrahedral_mesh(mesh).message;
+  LM::Tetrahedral_mesh_3<Point_3> without = mesh;   // T removed: the boundary is pinched
+  without.tets.erase(std::find(without.tets.begin(), without.tets.end(), sliver));
+  without.boundary_faces = LM::internal::one_tet_faces(without.tets);
+  const LM::Mesh_validity_report pinched = LM::check_tetrahedral_mesh(without);
+  ASSERT_EQ(pinched.number_of_non_manifold_boundary_edges, 1u) << pinched.message;
+  ASSERT_EQ(pinched.number_of_pinched_vertices, 2u) << pinched.message;
+  for(std::size_t t = 4; t < mesh.tets.size(); ++t) {   // X and Y are no candidates
+    const std::array<Eigen::Vector3d, 4> q = LM::internal::isotropic_tetrahedron(mesh, field, t);
+    ASSERT_GT(LM::smallest_dihedral_angle(q[0], q[1], q[2], q[3]), 20.);
+  }
+
+  EXPECT_EQ(LM::peel_boundary_slivers(mesh, field), 1u);
+  EXPECT_TRUE(LM::check_tetrahedral_mesh(mesh).valid()) << LM::check_tetrahedral_mesh(mesh).message;
+  EXPECT_EQ(mesh.tets.size(), 5u);
+  EXPECT_NE(std::find(mesh.tets.begin(), mesh.tets.end(), sliver), mesh.tets.end());
+  EXPECT_EQ(mesh.boundary_faces, LM::internal::one_tet_faces(mesh.tets));
+}

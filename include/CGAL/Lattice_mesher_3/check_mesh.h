@@ -160,6 +160,56 @@ inline std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i)
   return i;
 }
 
+// What makes a boundary (oriented faces, each once) not a 2-manifold: its edges that are not in
+// exactly two faces of opposite directions (each once), and its vertices around which the faces
+// do not form one cycle. An edge's faces all hold its ends, and a vertex's faces hold it: of the
+// faces around a set of vertices alone, the answer is exact for the edges and vertices of the set.
+struct Boundary_manifold_problems
+{
+  std::vector<std::array<int, 2> > edges;
+  std::vector<int> vertices;
+};
+
+inline Boundary_manifold_problems boundary_manifold_problems(const std::vector<Triangle_indices>& faces)
+{
+  Boundary_manifold_problems p;
+  std::vector<std::pair<int, int> > directed_edges;
+  std::vector<std::array<int, 3> > links;  // (v, a, b): the face (v, a, b) turns from a to b around v
+  for(const Triangle_indices& f : faces)
+    for(int i = 0; i < 3; ++i) {
+      directed_edges.emplace_back(f[i], f[(i + 1) % 3]);
+      links.push_back({ f[i], f[(i + 1) % 3], f[(i + 2) % 3] });
+    }
+  std::sort(directed_edges.begin(), directed_edges.end());
+  for(std::size_t i = 0, j; i < directed_edges.size(); i = j) {
+    for(j = i + 1; j < directed_edges.size() && directed_edges[j] == directed_edges[i]; ++j) {}
+    const std::pair<int, int> e = directed_edges[i], reverse(e.second, e.first);
+    const auto range = std::equal_range(directed_edges.begin(), directed_edges.end(), reverse);
+    // each undirected edge is judged once: from its smaller end, or from the only direction present
+    if((j - i != 1 || range.second - range.first != 1) && (e.first < e.second || range.first == range.second))
+      p.edges.push_back({ e.first, e.second });
+  }
+  std::sort(links.begin(), links.end());
+  for(std::size_t i = 0, j; i < links.size(); i = j) {
+    const int v = links[i][0];
+    for(j = i + 1; j < links.size() && links[j][0] == v; ++j) {}
+    // links[i, j) is sorted by a; a single cycle iff the a are distinct and the walk a -> b
+    // from the first a comes back after exactly j - i steps
+    bool distinct = true;
+    for(std::size_t k = i + 1; k < j; ++k) distinct = distinct && links[k][1] != links[k - 1][1];
+    auto next = [&](int a) {
+      const auto it = std::lower_bound(links.begin() + i, links.begin() + j, std::array<int, 3>{ v, a, -1 });
+      return (it != links.begin() + j && (*it)[1] == a) ? (*it)[2] : -1;
+    };
+    const int start = links[i][1];
+    std::size_t steps = 0;
+    int a = start;
+    do { a = next(a); ++steps; } while(a != -1 && a != start && steps <= j - i);
+    if(!distinct || a != start || steps != j - i) p.vertices.push_back(v);
+  }
+  return p;
+}
+
 } // namespace internal
 
 inline bool Mesh_validity_report::valid() const
@@ -288,44 +338,13 @@ Mesh_validity_report check_tetrahedral_mesh(const Tetrahedral_mesh_3<Point_3>& m
   for(std::size_t b = 0; b < boundary.size(); ++b)
     if(!listed[b]) log.add(&R::number_of_missing_boundary_faces, describe("face", boundary[b].second));
 
-  // manifold boundary (the tets' own, whatever boundary_faces says): directed edges, vertex links
-  std::vector<std::pair<int, int> > directed_edges;
-  std::vector<std::array<int, 3> > links;  // (v, a, b): the face (v, a, b) turns from a to b around v
-  for(const auto& b : boundary) {
-    const Triangle_indices& f = b.second;
-    for(int i = 0; i < 3; ++i) {
-      directed_edges.emplace_back(f[i], f[(i + 1) % 3]);
-      links.push_back({ f[i], f[(i + 1) % 3], f[(i + 2) % 3] });
-    }
-  }
-  std::sort(directed_edges.begin(), directed_edges.end());
-  for(std::size_t i = 0, j; i < directed_edges.size(); i = j) {
-    for(j = i + 1; j < directed_edges.size() && directed_edges[j] == directed_edges[i]; ++j) {}
-    const std::pair<int, int> e = directed_edges[i], reverse(e.second, e.first);
-    const auto range = std::equal_range(directed_edges.begin(), directed_edges.end(), reverse);
-    // each undirected edge is judged once: from its smaller end, or from the only direction present
-    if((j - i != 1 || range.second - range.first != 1) && (e.first < e.second || range.first == range.second))
-      log.add(&R::number_of_non_manifold_boundary_edges, describe("edge", std::array<int, 2>{ e.first, e.second }));
-  }
-  std::sort(links.begin(), links.end());
-  for(std::size_t i = 0, j; i < links.size(); i = j) {
-    const int v = links[i][0];
-    for(j = i + 1; j < links.size() && links[j][0] == v; ++j) {}
-    // links[i, j) is sorted by a; a single cycle iff the a are distinct and the walk a -> b
-    // from the first a comes back after exactly j - i steps
-    bool distinct = true;
-    for(std::size_t k = i + 1; k < j; ++k) distinct = distinct && links[k][1] != links[k - 1][1];
-    auto next = [&](int a) {
-      const auto it = std::lower_bound(links.begin() + i, links.begin() + j, std::array<int, 3>{ v, a, -1 });
-      return (it != links.begin() + j && (*it)[1] == a) ? (*it)[2] : -1;
-    };
-    const int start = links[i][1];
-    std::size_t steps = 0;
-    int a = start;
-    do { a = next(a); ++steps; } while(a != -1 && a != start && steps <= j - i);
-    if(!distinct || a != start || steps != j - i)
-      log.add(&R::number_of_pinched_vertices, "vertex " + std::to_string(v));
-  }
+  // manifold boundary (the tets' own, whatever boundary_faces says)
+  std::vector<Triangle_indices> outward;
+  outward.reserve(boundary.size());
+  for(const auto& b : boundary) outward.push_back(b.second);
+  const internal::Boundary_manifold_problems manifold = internal::boundary_manifold_problems(outward);
+  for(const std::array<int, 2>& e : manifold.edges) log.add(&R::number_of_non_manifold_boundary_edges, describe("edge", e));
+  for(int v : manifold.vertices) log.add(&R::number_of_pinched_vertices, "vertex " + std::to_string(v));
 
   r.message = log.message();
   return r;

@@ -17,7 +17,6 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <utility>
 #include <vector>
 
@@ -60,20 +59,63 @@ Peeling_options peeling_options(const NamedParameters& np)
 
 namespace internal {
 
-// The outward faces of the tetrahedra that are in no other tetrahedron, sorted.
-inline std::vector<std::array<int, 3> > one_tet_faces(const std::vector<std::array<int, 4> >& tets)
+// The faces of `tets` that are in no other tetrahedron, oriented outward (as `outward_faces()`
+// gives them), sorted; of the tetrahedra that `holds` accepts, the faces that `keep` accepts.
+template <typename Holds, typename Keep>
+std::vector<std::array<int, 3> > one_tet_faces(const std::vector<std::array<int, 4> >& tets, Holds holds, Keep keep)
 {
-  std::map<Triangle_indices, std::pair<int, Triangle_indices> > faces;   // sorted -> count, outward
+  std::vector<std::pair<Triangle_indices, Triangle_indices> > faces;   // sorted, outward
   for(const std::array<int, 4>& t : tets)
-    for(const Triangle_indices& f : outward_faces(t)) {
-      auto& e = faces[sorted_triangle(f)];
-      ++e.first;
-      e.second = f;
-    }
+    if(holds(t))
+      for(const Triangle_indices& f : outward_faces(t))
+        if(keep(f)) faces.emplace_back(sorted_triangle(f), f);
+  std::sort(faces.begin(), faces.end());
   std::vector<std::array<int, 3> > result;
-  for(const auto& e : faces) if(e.second.first == 1) result.push_back(e.second.second);
+  for(std::size_t i = 0, j; i < faces.size(); i = j) {
+    for(j = i + 1; j < faces.size() && faces[j].first == faces[i].first; ++j) {}
+    if(j - i == 1) result.push_back(faces[i].second);
+  }
   std::sort(result.begin(), result.end());
   return result;
+}
+
+inline std::vector<std::array<int, 3> > one_tet_faces(const std::vector<std::array<int, 4> >& tets)
+{
+  auto all = [](const auto&) { return true; };
+  return one_tet_faces(tets, all, all);
+}
+
+// Which of the tetrahedra `batch` (indices into mesh.tets, no two sharing a vertex) may go: those
+// whose removal leaves the boundary a 2-manifold. A removal changes the boundary only at the
+// tetrahedron's own vertices and edges, where the faces are all in the tetrahedra around its
+// vertices, and those of the batch share none: each is judged alone, from these faces. Returns
+// the flags of the batch, and sets `boundary` to the new boundary faces around the vertices of
+// those that may go.
+template <typename Point_3>
+std::vector<char> removable_tets(const Tetrahedral_mesh_3<Point_3>& mesh, const std::vector<std::size_t>& batch,
+                                 std::vector<Triangle_indices>& boundary)
+{
+  std::vector<int> owner(mesh.points.size(), -1);   // the batch's tetrahedron of each vertex
+  std::vector<char> gone(mesh.tets.size(), 0);
+  for(std::size_t k = 0; k < batch.size(); ++k) {
+    gone[batch[k]] = 1;
+    for(int v : mesh.tets[batch[k]]) owner[std::size_t(v)] = int(k);
+  }
+  auto owned = [&](const auto& f) { return std::any_of(f.begin(), f.end(), [&](int v) { return owner[std::size_t(v)] >= 0; }); };
+  std::vector<std::array<int, 4> > around;
+  for(std::size_t t = 0; t < mesh.tets.size(); ++t)
+    if(!gone[t] && owned(mesh.tets[t])) around.push_back(mesh.tets[t]);
+  boundary = one_tet_faces(around, owned, owned);
+  std::vector<char> removable(batch.size(), 1);
+  const Boundary_manifold_problems problems = boundary_manifold_problems(boundary);
+  for(const std::array<int, 2>& e : problems.edges)
+    for(int v : e) if(owner[std::size_t(v)] >= 0) removable[std::size_t(owner[std::size_t(v)])] = 0;
+  for(int v : problems.vertices)
+    if(owner[std::size_t(v)] >= 0) removable[std::size_t(owner[std::size_t(v)])] = 0;
+  boundary.erase(std::remove_if(boundary.begin(), boundary.end(), [&](const Triangle_indices& f) {
+                   return std::none_of(f.begin(), f.end(), [&](int v) { return owner[std::size_t(v)] >= 0 && removable[std::size_t(owner[std::size_t(v)])]; });
+                 }), boundary.end());
+  return removable;
 }
 
 } // namespace internal
@@ -88,16 +130,22 @@ std::size_t peel_boundary_slivers(Tetrahedral_mesh_3<Point_3>& mesh, const Frame
   typedef internal::Triangle_indices Face;
   std::size_t removed = 0;
   for(int round = 0; round < o.max_rounds; ++round) {
-    std::map<Face, int> boundary;   // sorted boundary face -> 1
-    for(const auto& f : mesh.boundary_faces) boundary[internal::sorted_triangle(f)] = 1;
+    std::vector<Face> boundary;   // the faces' sorted indices, sorted
+    std::vector<char> on_boundary(mesh.points.size(), 0);
+    for(const Face& f : mesh.boundary_faces) {
+      boundary.push_back(internal::sorted_triangle(f));
+      for(int v : f) on_boundary[std::size_t(v)] = 1;
+    }
+    std::sort(boundary.begin(), boundary.end());
     // candidates: (angle, tet)
     std::vector<std::pair<double, std::size_t> > candidates;
     for(std::size_t t = 0; t < mesh.tets.size(); ++t) {
       const std::array<int, 4>& v = mesh.tets[t];
-      const std::array<Face, 4> faces = internal::outward_faces(v);
-      int on_boundary = 0;
-      for(const Face& f : faces) on_boundary += boundary.count(internal::sorted_triangle(f)) ? 1 : 0;
-      if(on_boundary < 2) continue;
+      if(!(on_boundary[v[0]] && on_boundary[v[1]] && on_boundary[v[2]] && on_boundary[v[3]])) continue;
+      int faces = 0;
+      for(const Face& f : internal::outward_faces(v))
+        faces += std::binary_search(boundary.begin(), boundary.end(), internal::sorted_triangle(f)) ? 1 : 0;
+      if(faces < 2) continue;
       const std::array<Eigen::Vector3d, 4> q = internal::isotropic_tetrahedron(mesh, field, t);
       const double angle = smallest_dihedral_angle(q[0], q[1], q[2], q[3]);
       if(!(angle < o.angle)) continue;
@@ -108,7 +156,7 @@ std::size_t peel_boundary_slivers(Tetrahedral_mesh_3<Point_3>& mesh, const Frame
     }
     if(candidates.empty()) break;
     std::sort(candidates.begin(), candidates.end());
-    // a first batch of slivers that share no vertex
+    // a batch of slivers that share no vertex, of which those that keep the boundary manifold go
     std::vector<char> used(mesh.points.size(), 0);
     std::vector<std::size_t> batch;
     for(const auto& c : candidates) {
@@ -117,34 +165,28 @@ std::size_t peel_boundary_slivers(Tetrahedral_mesh_3<Point_3>& mesh, const Frame
       for(int i : v) used[i] = 1;
       batch.push_back(c.second);
     }
-    auto without = [&](const std::vector<std::size_t>& gone) {
-      std::vector<char> drop(mesh.tets.size(), 0);
-      for(std::size_t t : gone) drop[t] = 1;
-      Tetrahedral_mesh_3<Point_3> m;
-      m.points = mesh.points;
-      m.vertex_kinds = mesh.vertex_kinds;
-      for(std::size_t t = 0; t < mesh.tets.size(); ++t) if(!drop[t]) m.tets.push_back(mesh.tets[t]);
-      m.boundary_faces = internal::one_tet_faces(m.tets);
-      return m;
-    };
-    Tetrahedral_mesh_3<Point_3> next = without(batch);
-    std::size_t taken = batch.size();
-    if(!check_tetrahedral_mesh(next).valid()) {
-      taken = 0;
-      std::vector<std::size_t> kept;
-      for(std::size_t k = 0; k < batch.size() && k < 64; ++k) {
-        std::vector<std::size_t> trial(kept);
-        trial.push_back(batch[k]);
-        Tetrahedral_mesh_3<Point_3> m = without(trial);
-        if(check_tetrahedral_mesh(m).valid()) { kept = trial; next = std::move(m); }
+    std::vector<Face> new_faces;
+    const std::vector<char> removable = internal::removable_tets(mesh, batch, new_faces);
+    std::vector<char> drop(mesh.points.size(), 0), gone(mesh.tets.size(), 0);   // drop: faces around these are new
+    std::size_t taken = 0;
+    for(std::size_t k = 0; k < batch.size(); ++k)
+      if(removable[k]) {
+        ++taken;
+        gone[batch[k]] = 1;
+        for(int v : mesh.tets[batch[k]]) drop[std::size_t(v)] = 1;
       }
-      taken = kept.size();
-      if(taken == 0) break;
-    }
-    mesh = std::move(next);
+    if(taken == 0) break;
+    std::size_t kept = 0;
+    for(std::size_t t = 0; t < mesh.tets.size(); ++t) if(!gone[t]) mesh.tets[kept++] = mesh.tets[t];
+    mesh.tets.resize(kept);
+    mesh.boundary_faces.erase(std::remove_if(mesh.boundary_faces.begin(), mesh.boundary_faces.end(), [&](const Face& f) {
+                                return drop[std::size_t(f[0])] || drop[std::size_t(f[1])] || drop[std::size_t(f[2])];
+                              }), mesh.boundary_faces.end());
+    mesh.boundary_faces.insert(mesh.boundary_faces.end(), new_faces.begin(), new_faces.end());
     removed += taken;
   }
-  if(removed > 0) {   // drop the vertices in no tetrahedron
+  if(removed > 0) {   // the boundary faces listed as one_tet_faces() does; the vertices in no tetrahedron go
+    mesh.boundary_faces = internal::one_tet_faces(mesh.tets);
     std::vector<char> unused(mesh.points.size(), 1);
     for(const std::array<int, 4>& t : mesh.tets)
       for(int i : t) unused[i] = 0;
@@ -163,10 +205,10 @@ boundary (four: alone, where a part of the domain is thinner than the lattice), 
 times its mean edge (both in the isotropic space of `field`), or whatever its height, below
 `sliver_angle`. Such a tetrahedron adds almost no
 volume; what no flip or move of a vertex raises (its vertices held on the surface), removing it
-does, and the boundary moves by its height. Removals that would leave the boundary non-manifold are not made: a round
-removes a set of slivers that share no vertex, and if the mesh is then invalid
-(`check_tetrahedral_mesh()`), tries them one at a time. Vertices that end up in no tetrahedron
-are removed.
+does, and the boundary moves by its height. Removals that would leave the boundary non-manifold
+are not made: a round takes a set of slivers that share no vertex and removes each unless the
+boundary around its vertices would then not be a 2-manifold (as `check_tetrahedral_mesh()` defines
+it). Vertices that end up in no tetrahedron are removed.
 
 \tparam FrameField a model of `FrameField_3`
 
