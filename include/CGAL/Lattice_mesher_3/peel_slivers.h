@@ -60,15 +60,14 @@ Peeling_options peeling_options(const NamedParameters& np)
 namespace internal {
 
 // The faces of `tets` that are in no other tetrahedron, oriented outward (as `outward_faces()`
-// gives them), sorted; of the tetrahedra that `holds` accepts, the faces that `keep` accepts.
-template <typename Holds, typename Keep>
-std::vector<std::array<int, 3> > one_tet_faces(const std::vector<std::array<int, 4> >& tets, Holds holds, Keep keep)
+// gives them), sorted; only those that `keep` accepts.
+template <typename Keep>
+std::vector<std::array<int, 3> > one_tet_faces(const std::vector<std::array<int, 4> >& tets, Keep keep)
 {
   std::vector<std::pair<Triangle_indices, Triangle_indices> > faces;   // sorted, outward
   for(const std::array<int, 4>& t : tets)
-    if(holds(t))
-      for(const Triangle_indices& f : outward_faces(t))
-        if(keep(f)) faces.emplace_back(sorted_triangle(f), f);
+    for(const Triangle_indices& f : outward_faces(t))
+      if(keep(f)) faces.emplace_back(sorted_triangle(f), f);
   std::sort(faces.begin(), faces.end());
   std::vector<std::array<int, 3> > result;
   for(std::size_t i = 0, j; i < faces.size(); i = j) {
@@ -81,8 +80,7 @@ std::vector<std::array<int, 3> > one_tet_faces(const std::vector<std::array<int,
 
 inline std::vector<std::array<int, 3> > one_tet_faces(const std::vector<std::array<int, 4> >& tets)
 {
-  auto all = [](const auto&) { return true; };
-  return one_tet_faces(tets, all, all);
+  return one_tet_faces(tets, [](const Triangle_indices&) { return true; });
 }
 
 // Which of the tetrahedra `batch` (indices into mesh.tets, no two sharing a vertex) may go: those
@@ -105,7 +103,7 @@ std::vector<char> removable_tets(const Tetrahedral_mesh_3<Point_3>& mesh, const 
   std::vector<std::array<int, 4> > around;
   for(std::size_t t = 0; t < mesh.tets.size(); ++t)
     if(!gone[t] && owned(mesh.tets[t])) around.push_back(mesh.tets[t]);
-  boundary = one_tet_faces(around, owned, owned);
+  boundary = one_tet_faces(around, owned);
   std::vector<char> removable(batch.size(), 1);
   const Boundary_manifold_problems problems = boundary_manifold_problems(boundary);
   for(const std::array<int, 2>& e : problems.edges)
