@@ -183,8 +183,8 @@ std::size_t peel_boundary_slivers(Tetrahedral_mesh_3<Point_3>& mesh, const Frame
     mesh.boundary_faces.insert(mesh.boundary_faces.end(), new_faces.begin(), new_faces.end());
     removed += taken;
   }
-  if(removed > 0) {   // the boundary faces listed as one_tet_faces() does; the vertices in no tetrahedron go
-    mesh.boundary_faces = internal::one_tet_faces(mesh.tets);
+  if(removed > 0) {   // the rounds kept the boundary faces up to date: sorted; the vertices in no tetrahedron go
+    std::sort(mesh.boundary_faces.begin(), mesh.boundary_faces.end());
     std::vector<char> unused(mesh.points.size(), 1);
     for(const std::array<int, 4>& t : mesh.tets)
       for(int i : t) unused[i] = 0;
