@@ -79,10 +79,12 @@ static const char* usage =
   "  --field          identity (default); rotation-y (the paper's torus field Ry); fig8, fig9 (the\n"
   "                   paper's Fig. 8 and 9 fields, for the domains cube and cube11); cross (a\n"
   "                   smooth cross field of the domain, aligned with its boundary, feature curves\n"
-  "                   and corners, computed on a background mesh; it prints its time, smoothness\n"
-  "                   energy, boundary alignment and singular edges); or a discrete field, whose\n"
-  "                   samples must cover the domain's bounding box (a field on a mesh is\n"
-  "                   interpolated in its tetrahedra, one of samples alone is the nearest sample's):\n"
+  "                   and corners, for --lattice (the normal along a face diagonal of the frame\n"
+  "                   for bcc, along an axis for fcc), computed on a background mesh; it prints\n"
+  "                   its time, smoothness energy, boundary alignment and singular edges); or a\n"
+  "                   discrete field, whose samples must cover the domain's bounding box (a field\n"
+  "                   on a mesh is interpolated in its tetrahedra, one of samples alone is the\n"
+  "                   nearest sample's):\n"
   "                   X.mesh  a Medit mesh whose vertices carry the frames of --field-data FILE\n"
   "                           (default X.sol): a Medit .sol of frames (9 values, T row by row) or\n"
   "                           of metrics M (6 values, T = M^-1/2), or a file of 9 numbers a line,\n"
@@ -270,10 +272,13 @@ static Field_choice cross_field(const Domain& domain, const Options& o, LM::Stag
   double seconds = 0.;
   const auto field = LM::internal::timed(seconds, [&] {
     return std::make_shared<const Discrete_field>(LM::compute_cross_field_3(domain,
-        CGAL::parameters::number_of_vertices(o.field_vertices).random_seed(o.seed).number_of_threads(o.threads)));
+        CGAL::parameters::number_of_vertices(o.field_vertices).random_seed(o.seed).number_of_threads(o.threads)
+                         .lattice(LM::lattice_type_from_name(o.lattice))));
   });
   times.add("field", seconds);
-  const LM::Frame_field_diagnostics d = timed(times, "field", [&] { return LM::compute_frame_field_diagnostics(*field); });
+  const LM::Frame_field_diagnostics d = timed(times, "field", [&] {
+    return LM::compute_frame_field_diagnostics(*field, CGAL::parameters::lattice(LM::lattice_type_from_name(o.lattice)));
+  });
   if(!o.quiet)
     std::printf("lattice-mesh: cross field: %zu vertices, %zu tetrahedra, %.2f s; smoothness energy %.6g; boundary alignment "
                 "%.3f degrees mean, %.3f max; %zu singular edges\n", field->number_of_samples(), field->mesh().tets.size(), seconds,

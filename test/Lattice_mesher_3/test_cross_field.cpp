@@ -118,8 +118,8 @@ TEST(Octahedral_frames, ProjectionRecoversTheFrame)
     for(int i = 0; i < 9; ++i) perturbed[i] += noise(g);
     const Eigen::Matrix3d pn = LMi::nearest_frame_rotation(perturbed);
     for(int k = 0; k < 3; ++k) {
-      exact = (std::max)(exact, LMi::angle_to_nearest_axis(p, r.col(k)));
-      noisy = (std::max)(noisy, LMi::angle_to_nearest_axis(pn, r.col(k)));
+      exact = (std::max)(exact, LMi::angle_to_nearest_direction(p, r.col(k)));
+      noisy = (std::max)(noisy, LMi::angle_to_nearest_direction(pn, r.col(k)));
     }
     // no frame is nearer to the perturbed coefficients than the projection's
     EXPECT_GE(perturbed.normalized().dot(LMi::frame_coefficients(pn)), perturbed.normalized().dot(q) - 1e-12);
@@ -130,20 +130,46 @@ TEST(Octahedral_frames, ProjectionRecoversTheFrame)
             << " with noise 0.05\n";
 }
 
-// the frames with an axis along a normal n: the projection keeps that axis, and finds the frame
-// itself when it has one along n
-TEST(Octahedral_frames, AlignedProjectionHasAnAxisAlongTheNormal)
+// the frames with a direction (an axis or a face diagonal) along a normal n: the
+// projection keeps that direction, fits q at least as well as any of 720 turns about n, and
+// finds the frame itself when it has the direction along n
+TEST(Octahedral_frames, AlignedProjectionHasTheDirectionAlongTheNormal)
 {
+  const double pi = 3.14159265358979323846;
   std::mt19937 g(13);
   std::normal_distribution<double> normal;
-  for(const Eigen::Matrix3d& r : random_rotations(100, 21)) {
-    LMi::Sh9 q;
-    for(int i = 0; i < 9; ++i) q[i] = normal(g);
-    const Eigen::Vector3d n = Eigen::Vector3d(normal(g), normal(g), normal(g)).normalized();
-    EXPECT_LT(LMi::angle_to_nearest_axis(LMi::nearest_aligned_frame_rotation(q, n), n), 1e-6);
-    const Eigen::Matrix3d a = LMi::nearest_aligned_frame_rotation(LMi::frame_coefficients(r), r.col(1));
-    for(int k = 0; k < 3; ++k) EXPECT_LT(LMi::angle_to_nearest_axis(a, r.col(k)), 1e-6);
+  const std::vector<Eigen::Matrix3d> rotations = random_rotations(100, 21);
+  for(LMi::Frame_direction d : { LMi::Frame_direction::AXIS, LMi::Frame_direction::FACE_DIAGONAL }) {
+    double worst_angle = 0., worst_fit = 0., worst_self = 0.;
+    for(const Eigen::Matrix3d& r : rotations) {
+      LMi::Sh9 q;
+      for(int i = 0; i < 9; ++i) q[i] = normal(g);
+      const Eigen::Vector3d n = Eigen::Vector3d(normal(g), normal(g), normal(g)).normalized();
+      const Eigen::Matrix3d p = LMi::nearest_aligned_frame_rotation(q, n, d);
+      worst_angle = (std::max)(worst_angle, LMi::angle_to_nearest_direction(p, n, d));
+      const Eigen::Matrix3d rn = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), n).toRotationMatrix();
+      for(int k = 0; k < 720; ++k) {
+        const Eigen::Matrix3d t = rn * Eigen::AngleAxisd(k * pi / 360., Eigen::Vector3d::UnitZ()).toRotationMatrix() * LMi::direction_to_z(d);
+        worst_fit = (std::max)(worst_fit, q.dot(LMi::frame_coefficients(t)) - q.dot(LMi::frame_coefficients(p)));
+      }
+      const Eigen::Vector3d along = r * LMi::direction_vector(d);
+      const Eigen::Matrix3d self = LMi::nearest_aligned_frame_rotation(LMi::frame_coefficients(r), along, d);
+      for(int k = 0; k < 3; ++k) worst_self = (std::max)(worst_self, LMi::angle_to_nearest_direction(self, r.col(k)));
+    }
+    EXPECT_LT(worst_angle, 1e-6) << "direction " << int(d);
+    EXPECT_LT(worst_fit, 1e-9) << "direction " << int(d);
+    EXPECT_LT(worst_self, 1e-6) << "direction " << int(d);
   }
+}
+
+// the frame with a direction along z is symmetric by the turns about z that keep the direction,
+// so it has only the orders they allow: 4 for an axis, 2 and 4 for a face diagonal
+TEST(Octahedral_frames, FrameWithADirectionAlongZHasTheOrdersOfItsSymmetry)
+{
+  EXPECT_EQ(LMi::frame_orders(LMi::frame_with_direction_along_z(LMi::Frame_direction::AXIS)), std::vector<int>({ 4 }));
+  EXPECT_EQ(LMi::frame_orders(LMi::frame_with_direction_along_z(LMi::Frame_direction::FACE_DIAGONAL)), std::vector<int>({ 2, 4 }));
+  for(LMi::Frame_direction d : { LMi::Frame_direction::AXIS, LMi::Frame_direction::FACE_DIAGONAL })
+    EXPECT_LT(LMi::angle_to_nearest_direction(LMi::direction_to_z(d).transpose(), Eigen::Vector3d::UnitZ(), d), 1e-9);
 }
 
 typedef CGAL::Epick K;
@@ -153,7 +179,7 @@ typedef CGAL::Lattice_mesher_3::Constant_frame_field_3<CGAL::Lattice_mesher_trai
 double frame_angle(const Eigen::Matrix3d& r, const Eigen::Matrix3d& s)
 {
   double worst = 0.;
-  for(int k = 0; k < 3; ++k) worst = (std::max)(worst, LMi::angle_to_nearest_axis(s, r.col(k)));
+  for(int k = 0; k < 3; ++k) worst = (std::max)(worst, LMi::angle_to_nearest_direction(s, r.col(k)));
   return worst;
 }
 
@@ -206,8 +232,9 @@ TEST(Octahedral_frames, BestCubeRotationUndoesACubeRotation)
   EXPECT_GE(cube.size(), 12u);
 }
 
-// On a cube, whose creases and corners hold the whole frame, the smooth field is the identity
-// (up to the cube's symmetries) everywhere, between the samples too; it has no singular edge.
+// On a cube, whose creases and corners hold the whole frame, the smooth field whose axes hold the
+// normals (FCC's) is the identity (up to the cube's symmetries) everywhere, between the samples
+// too; it has no singular edge.
 TEST(Cross_field, CubeFieldIsTheIdentity)
 {
   namespace LM = CGAL::Lattice_mesher_3;
@@ -217,13 +244,14 @@ TEST(Cross_field, CubeFieldIsTheIdentity)
   std::size_t full = 0;
   for(const LMi::Frame_constraint& c : constraints) full += c.kind == LMi::Frame_constraint::FULL;
   EXPECT_GT(full, 8u);
-  const Discrete_field field = LM::compute_cross_field_3(cube, CGAL::parameters::edge_length(0.2).number_of_iterations(20));
+  const auto fcc = CGAL::parameters::lattice(LM::Lattice_type::FCC);
+  const Discrete_field field = LM::compute_cross_field_3(cube, fcc.edge_length(0.2).number_of_iterations(20));
   EXPECT_EQ(field.mesh().tets.size(), mesh.tets.size());
   double worst = 0.;
   for(const Eigen::Matrix3d& r : field.frames()) worst = (std::max)(worst, frame_angle(r, Eigen::Matrix3d::Identity()));
   for(const K::Point_3& p : random_points(2000, 0., 1., 3)) worst = (std::max)(worst, frame_angle(field.frame(p), Eigen::Matrix3d::Identity()));
   EXPECT_LT(worst, 1.);
-  const LM::Frame_field_diagnostics d = LM::compute_frame_field_diagnostics(field);
+  const LM::Frame_field_diagnostics d = LM::compute_frame_field_diagnostics(field, fcc);
   EXPECT_LT(d.energy, 1e-6);
   EXPECT_LT(d.max_boundary_alignment, 1.);
   EXPECT_TRUE(d.singular_edges.empty()) << d.singular_edges.size() << " singular edges";
@@ -273,8 +301,9 @@ TEST(Cross_field, SavedFieldReloadsToTheSameFrames)
   for(const std::string& f : { mesh_file, sol, text }) std::remove(f.c_str());
 }
 
-// On a sphere every boundary frame has an axis along the normal, and the MBO iterations lower
-// the energy of the initial projection by a tenth at least, never raising it.
+// On a sphere every boundary frame has the direction of its lattice along the normal (BCC's field
+// a face diagonal, FCC's an axis), and the MBO iterations lower the energy of the initial
+// projection by a tenth at least, never raising it.
 TEST(Cross_field, SphereFieldIsAlignedWithTheNormal)
 {
   namespace LM = CGAL::Lattice_mesher_3;
@@ -284,20 +313,29 @@ TEST(Cross_field, SphereFieldIsAlignedWithTheNormal)
   EXPECT_LT(solved.energies.back(), 0.9 * solved.energies.front());
   for(std::size_t k = 1; k < solved.energies.size(); ++k) EXPECT_LE(solved.energies[k], solved.energies[k - 1]) << "iteration " << k;
 
-  const Discrete_field& field = ball_field();
-  double worst = 0.;
-  const LM::Tetrahedral_mesh_3<K::Point_3>& background = field.mesh();
-  for(const auto& f : background.boundary_faces)
-    for(int v : f) worst = (std::max)(worst, LMi::angle_to_nearest_axis(field.frames()[std::size_t(v)], LMi::to_eigen(background.points[std::size_t(v)])));
-  EXPECT_LT(worst, 2.);
+  const auto fcc = CGAL::parameters::lattice(LM::Lattice_type::FCC);
+  const Discrete_field fcc_field = LM::compute_cross_field_3(ball(), fcc.edge_length(0.25));
+  // the largest angle (degrees) between a boundary vertex's normal and the nearest direction d
+  auto worst_at_vertices = [](const Discrete_field& field, LMi::Frame_direction d) {
+    double worst = 0.;
+    const LM::Tetrahedral_mesh_3<K::Point_3>& background = field.mesh();
+    for(const auto& f : background.boundary_faces)
+      for(int v : f)
+        worst = (std::max)(worst, LMi::angle_to_nearest_direction(field.frames()[std::size_t(v)], LMi::to_eigen(background.points[std::size_t(v)]), d));
+    return worst;
+  };
+  const double bcc_worst = worst_at_vertices(ball_field(), LMi::Frame_direction::FACE_DIAGONAL);
+  const double fcc_worst = worst_at_vertices(fcc_field, LMi::Frame_direction::AXIS);
+  EXPECT_LT(bcc_worst, 2.);
+  EXPECT_LT(fcc_worst, 2.);
   // a ball's field cannot be smooth everywhere: it has singular curves
-  const LM::Frame_field_diagnostics d = LM::compute_frame_field_diagnostics(field);
+  const LM::Frame_field_diagnostics d = LM::compute_frame_field_diagnostics(fcc_field, fcc);
   EXPECT_GT(d.singular_edges.size(), 0u);
   EXPECT_LT(d.mean_boundary_alignment, 5.);
-  std::cout << "  ball: " << background.points.size() << " vertices, " << solved.energies.size() - 1 << " iterations, energy "
-            << solved.energies.front() << " -> " << solved.energies.back() << ", largest boundary angle to the normal " << worst
-            << " degrees; on the faces " << d.mean_boundary_alignment << " mean, " << d.max_boundary_alignment << " max; "
-            << d.singular_edges.size() << " singular edges\n";
+  std::cout << "  ball: " << mesh.points.size() << " vertices, " << solved.energies.size() - 1 << " iterations, energy "
+            << solved.energies.front() << " -> " << solved.energies.back() << "; largest boundary angle to the normal "
+            << bcc_worst << " degrees (BCC, face diagonals), " << fcc_worst << " (FCC, axes); FCC on the faces "
+            << d.mean_boundary_alignment << " mean, " << d.max_boundary_alignment << " max; " << d.singular_edges.size() << " singular edges\n";
 }
 
 // lattice-mesh --field cross: prints the field's figures, writes its singular edges and the

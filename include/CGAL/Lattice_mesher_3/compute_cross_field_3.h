@@ -39,7 +39,9 @@ struct Frame_field_diagnostics
   /// the number of tetrahedra around the edge
   double energy = 0.;
   /// the mean, weighted by area, over the boundary faces, of the angle (degrees) between the
-  /// face's normal and the nearest axis of the frame at the face's centroid
+  /// face's normal and the nearest direction of the frame at the face's centroid that the
+  /// lattice's boundary holds (see `compute_cross_field_3()`: a face diagonal for BCC, an axis
+  /// otherwise)
   double mean_boundary_alignment = 0.;
   /// the largest of these angles (degrees)
   double max_boundary_alignment = 0.;
@@ -50,6 +52,17 @@ struct Frame_field_diagnostics
 };
 
 namespace internal {
+
+// The direction of the frames that the boundary's normal holds, for the lattice of the named
+// parameter `lattice` (BCC if absent): a face diagonal for BCC, whose {110} planes are made of
+// faces of its tetrahedra (its {100} planes cut them into half octahedra, theta_min 45
+// degrees), a cube axis for FCC (half octahedra of theta_min 54.7 degrees) and the hole-less
+// kernel.
+template <typename NamedParameters>
+Frame_direction boundary_frame_direction(const NamedParameters& np)
+{
+  return stage_lattice(np).name == "bcc" ? Frame_direction::FACE_DIAGONAL : Frame_direction::AXIS;
+}
 
 // The tetrahedra around each inner edge (a, b), a < b, in the order of the ring (consecutive
 // ones share a face); boundary edges are left out.
@@ -104,13 +117,25 @@ Measures the smoothness, the boundary alignment and the singular edges of a fram
 a tetrahedral mesh (e.g. by `compute_cross_field_3()` or `read_frame_field_from_medit()`): see
 `Frame_field_diagnostics`. A field without tetrahedra has no edges (energy 0, no singular edge),
 and one without boundary faces no alignment figures (0).
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{lattice}
+    \cgalParamDescription{the lattice whose boundary direction the alignment is measured against,
+    as in `compute_cross_field_3()`: the nearest face diagonal of the frame for BCC, the nearest
+    axis otherwise}
+    \cgalParamType{`Lattice_type` or `Lattice_3`}
+    \cgalParamDefault{`Lattice_type::BCC`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
 */
-template <typename GT>
-Frame_field_diagnostics compute_frame_field_diagnostics(const Discrete_frame_field_3<GT>& field)
+template <typename GT, typename NamedParameters = parameters::Default_named_parameters>
+Frame_field_diagnostics compute_frame_field_diagnostics(const Discrete_frame_field_3<GT>& field,
+                                                        const NamedParameters& np = parameters::default_values())
 {
   typedef typename GT::Point_3 Point_3;
   const Tetrahedral_mesh_3<Point_3>& mesh = field.mesh();
   auto rotation = [](Eigen::Matrix3d t) { return internal::frame_rotation_of_axes(t); };
+  const internal::Frame_direction direction = internal::boundary_frame_direction(np);
   Frame_field_diagnostics d;
   std::vector<Eigen::Matrix3d> rotations;
   for(const auto& t : field.frames()) rotations.push_back(rotation(t));
@@ -122,7 +147,7 @@ Frame_field_diagnostics compute_frame_field_diagnostics(const Discrete_frame_fie
                           c = internal::to_eigen(mesh.points[std::size_t(f[2])]);
     const Eigen::Vector3d n = (b - a).cross(c - a), g = (a + b + c) / 3.;
     if(!(n.norm() > 0.)) continue;
-    const double angle = internal::angle_to_nearest_axis(rotation(field.frame(Point_3(g[0], g[1], g[2]))), n.normalized());
+    const double angle = internal::angle_to_nearest_direction(rotation(field.frame(Point_3(g[0], g[1], g[2]))), n.normalized(), direction);
     area_sum += n.norm();
     weighted += n.norm() * angle;
     d.max_boundary_alignment = (std::max)(d.max_boundary_alignment, angle);
@@ -151,17 +176,25 @@ Frame_field_diagnostics compute_frame_field_diagnostics(const Discrete_frame_fie
 /*!
 \ingroup PkgLatticeMesher3FrameFields
 
-Computes a smooth octahedral frame field ("cross field") of `domain` whose frames have an axis
-along the boundary's normal: on a background tetrahedral mesh of the domain (`lattice_mesh_3()`
-with the identity field, at the size of the named parameters), the frames of the vertices
-minimize the smoothness energy 1/2 sum_ij w_ij |q_i - q_j|^2 of their degree-4 spherical
-harmonic coefficients q (w_ij: the number of tetrahedra around the edge ij), as follows.
+Computes a smooth octahedral frame field ("cross field") of `domain` whose frames hold the
+boundary's normal along a lattice direction: on a background tetrahedral mesh of the domain
+(`lattice_mesh_3()` with the identity field, at the size of the named parameters), the frames of
+the vertices minimize the smoothness energy 1/2 sum_ij w_ij |q_i - q_j|^2 of their degree-4
+spherical harmonic coefficients q (w_ij: the number of tetrahedra around the edge ij), as
+follows.
 
-- Boundary constraints, surface patch by surface patch: on a patch, an axis along the domain's
-  normal (two free coefficients a vertex, as Palmer et al. 2020); on a feature curve (two
-  patches), the frame with an axis along the curve whose other two axes are nearest to both
-  normals (at 45 degrees from their bisector); at a corner (three patches), the frame nearest to
-  the corner's three edges.
+- The direction along the normal is the one whose lattice planes are made of faces of the
+  lattice's tetrahedra, so that the boundary layer is whole tetrahedra of the lattice: a face
+  diagonal of the frame for BCC (its {110} planes; its {100} planes cut its tetrahedra into half
+  octahedra of theta_min 45 degrees), a cube axis for FCC ({100}: half octahedra of theta_min
+  54.7 degrees) and the hole-less kernel.
+- Boundary constraints, surface patch by surface patch: on a patch, that direction along the
+  domain's normal (two free coefficients a vertex for an axis, as Palmer et al. 2020, four for a
+  face diagonal); on a feature curve (two patches), the frame with an axis along the curve whose
+  two directions across it are nearest to both normals (axes at 45 degrees from their bisector,
+  or face diagonals: axes along the bisector and across it); at a corner (three patches), for
+  axes the frame nearest to the corner's three edges (no three face diagonals are orthogonal:
+  the corner is free for BCC).
 - Initialization: the harmonic field under these constraints (a sparse linear solve, Eigen's
   conjugate gradient), projected onto the frames (Ray et al. 2016).
 - Palmer et al.'s modified MBO iterations: a step of diffusion (M + tau_k L) q = M p under the
@@ -181,6 +214,12 @@ its tetrahedra (see `Discrete_frame_field_3`): it is a rotation at every point. 
 `Lattice_mesher_3::make_lattice_domain_3()`)
 
 \cgalNamedParamsBegin
+  \cgalParamNBegin{lattice}
+    \cgalParamDescription{the lattice that the field is for, which sets the direction along the
+    normal (see above); the background mesh is BCC whatever it is}
+    \cgalParamType{`Lattice_type` or `Lattice_3`}
+    \cgalParamDefault{`Lattice_type::BCC`}
+  \cgalParamNEnd
   \cgalParamNBegin{number_of_vertices}
     \cgalParamDescription{about how many vertices the background mesh has}
     \cgalParamType{double}
@@ -241,7 +280,7 @@ auto compute_cross_field_3(const MeshDomain& domain, const NamedParameters& np =
         ? lattice_mesh_3(domain, identity, common.edge_length(length))
         : lattice_mesh_3(domain, identity, common.number_of_vertices(choose_parameter(get_parameter(np, internal_np::number_of_vertices), 4000.)));
     const bool features = choose_parameter(get_parameter(np, internal_np::align_to_features), true);
-    internal::Cross_field_solver solver(mesh, internal::boundary_frame_constraints(mesh, domain, features));
+    internal::Cross_field_solver solver(mesh, internal::boundary_frame_constraints(mesh, domain, features, internal::boundary_frame_direction(np)));
     internal::Cross_field_result result = solver.solve(iterations);
     std::vector<typename Traits::Matrix_3> frames(result.rotations.begin(), result.rotations.end());
     return Discrete_frame_field_3<Traits>(std::move(mesh), std::move(frames));

@@ -35,25 +35,29 @@ namespace CGAL {
 namespace Lattice_mesher_3 {
 namespace internal {
 
-// What constrains a vertex's frame: nothing (inside), an axis along a direction (a boundary
-// normal), or the whole frame (a crease or a corner).
+// What constrains a vertex's frame: nothing (inside), a direction of the frame (an axis or a
+// face diagonal) along `axis` (a boundary normal), or the whole frame (a crease or a corner).
 struct Frame_constraint
 {
   enum Kind { FREE, AXIS, FULL } kind = FREE;
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+  Frame_direction direction = Frame_direction::AXIS;
   Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();
 };
 
 // The constraints of the boundary vertices of a mesh of `domain`: the area-weighted normals of
 // their boundary faces, patch by patch (`boundary_patches`, one patch without them). One patch:
-// the domain's normal there (the faces' if it points inward). Two (a crease): the frame with an
-// axis along the crease whose other two axes make 45 degrees with the normals' bisector, the
-// frame nearest to both normals (each |alpha / 2 - 45| degrees away for normals alpha apart).
-// Three (a corner): the frame nearest to the corner's three edges, the creases n_i x n_j.
+// the frame's `direction` along the domain's normal there (the faces' if it points inward). Two
+// (a crease): the frame with an axis along the crease whose two directions across it are
+// nearest to both normals: axes at 45 degrees from the normals' bisector, or face diagonals
+// (axes along the bisector and across it), each |alpha / 2 - 45| degrees from the normals
+// alpha apart. Three (a corner): for axes, the frame nearest to the corner's three edges, the
+// creases n_i x n_j; no three face diagonals are orthogonal, so a corner is free for them.
 // A vertex on more patches, or whose normals are about parallel, is free.
 template <typename Point_3, typename Domain>
 std::vector<Frame_constraint> boundary_frame_constraints(const Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain,
-                                                         bool align_to_features = true)
+                                                         bool align_to_features = true,
+                                                         Frame_direction direction = Frame_direction::AXIS)
 {
   std::vector<std::map<int, Eigen::Vector3d> > normals(mesh.points.size());
   for(std::size_t k = 0; k < mesh.boundary_faces.size(); ++k) {
@@ -75,6 +79,7 @@ std::vector<Frame_constraint> boundary_frame_constraints(const Tetrahedral_mesh_
     if(n.size() == 1) {   // the surface's own normal, which the faces' only approximate
       const Eigen::Vector3d normal = to_eigen(domain.project_on_surface(mesh.points[v]).direction);
       c.kind = Frame_constraint::AXIS;
+      c.direction = direction;
       c.axis = normal.norm() > 0. && normal.dot(n[0]) > 0. ? Eigen::Vector3d(normal.normalized()) : n[0];
     }
     else if(n.size() == 2) {
@@ -82,11 +87,12 @@ std::vector<Frame_constraint> boundary_frame_constraints(const Tetrahedral_mesh_
       if(t.norm() < parallel) continue;
       const Eigen::Vector3d b = (n[0] + n[1]).normalized(), e = t.normalized().cross(b);
       Eigen::Matrix3d m;
-      m << (b + e) / std::sqrt(2.), (b - e) / std::sqrt(2.), t.normalized();
+      if(direction == Frame_direction::AXIS) m << (b + e) / std::sqrt(2.), (b - e) / std::sqrt(2.), t.normalized();
+      else m << b, e, t.normalized();
       c.kind = Frame_constraint::FULL;
       c.frame = frame_rotation_of_axes(m);
     }
-    else if(n.size() == 3) {
+    else if(n.size() == 3 && direction == Frame_direction::AXIS) {
       Eigen::Matrix3d m;
       m << n[0].cross(n[1]), n[1].cross(n[2]), n[2].cross(n[0]);
       if(m.colwise().norm().minCoeff() < parallel) continue;
@@ -153,10 +159,17 @@ public:
       const Frame_constraint& c = constraints_[v];
       if(c.kind == Frame_constraint::FREE) basis_[v] = Eigen::MatrixXd::Identity(9, 9);
       else if(c.kind == Frame_constraint::AXIS) {
+        // the frames with c.direction along c.axis: D(R_n) D(R_z(theta)) f, f the frame with
+        // the direction along z, whose pairs of coefficients of its orders turn with theta
         const Sh9_matrix d = wigner(Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), c.axis).toRotationMatrix());
-        basis_[v].resize(9, 2);
-        basis_[v] << d.col(0), d.col(8);
-        fixed_[v] = d.col(4) * std::sqrt(7. / 12.);
+        const Sh9 f = frame_with_direction_along_z(c.direction);
+        const std::vector<int> orders = frame_orders(f);
+        basis_[v].resize(9, 2 * Eigen::Index(orders.size()));
+        for(std::size_t i = 0; i < orders.size(); ++i) {
+          basis_[v].col(2 * Eigen::Index(i)) = d.col(4 - orders[i]);
+          basis_[v].col(2 * Eigen::Index(i) + 1) = d.col(4 + orders[i]);
+        }
+        fixed_[v] = d.col(4) * f[4];
       }
       else { basis_[v].resize(9, 0); fixed_[v] = frame_coefficients(c.frame); }
       offset_[v + 1] = offset_[v] + int(basis_[v].cols());
@@ -236,7 +249,7 @@ private:
   {
     const Frame_constraint& c = constraints_[v];
     if(c.kind == Frame_constraint::FULL) return c.frame;
-    if(c.kind == Frame_constraint::AXIS) return nearest_aligned_frame_rotation(q, c.axis);
+    if(c.kind == Frame_constraint::AXIS) return nearest_aligned_frame_rotation(q, c.axis, c.direction);
     if(start == nullptr) return nearest_frame_rotation(q);
     // from the previous frame; the five seeds only where q has moved far from it (a cosine
     // below 0.99 to the nearest frame found), near the singularities

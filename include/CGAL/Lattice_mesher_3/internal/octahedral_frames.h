@@ -23,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace CGAL {
 namespace Lattice_mesher_3 {
@@ -178,24 +179,87 @@ inline Eigen::Matrix3d nearest_frame_rotation(const Sh9& q)
   return best;
 }
 
-// The rotation of the frame nearest to q among those with an axis along the unit vector n:
-// R_n R_z(theta), R_n taking z to n, theta = atan2(p_0, p_8) / 4 with p = D(R_n)^T q.
-inline Eigen::Matrix3d nearest_aligned_frame_rotation(const Sh9& q, const Eigen::Vector3d& n)
+// The direction of a frame that a boundary normal holds: a cube axis, or a face diagonal ((1, 1,
+// 0) / sqrt(2) and its images: the normal of the BCC lattice's {110} planes, made of faces of its
+// tetrahedra).
+enum class Frame_direction { AXIS, FACE_DIAGONAL };
+
+inline Eigen::Vector3d direction_vector(Frame_direction d)
 {
-  const Eigen::Matrix3d rn = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), n).toRotationMatrix();
-  const Sh9 p = wigner(rn).transpose() * q;
-  const double theta = (p[0] == 0. && p[8] == 0.) ? 0. : .25 * std::atan2(p[0], p[8]);
-  return rn * Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  return d == Frame_direction::AXIS ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d(1., 1., 0.).normalized();
 }
 
-// The angle (degrees) between v and the nearest axis of the frame of rotation r.
-inline double angle_to_nearest_axis(const Eigen::Matrix3d& r, const Eigen::Vector3d& v)
+// A rotation taking the direction d of the axis-aligned frame to z.
+inline Eigen::Matrix3d direction_to_z(Frame_direction d)
 {
-  const Eigen::Vector3d w = (r.transpose() * v).cwiseAbs();
-  int k = 0;
-  w.maxCoeff(&k);
-  // atan2 of the parts across and along the axis: exact near 0, where acos is not
-  return std::atan2(std::hypot(w[(k + 1) % 3], w[(k + 2) % 3]), w[k]) * 180. / 3.14159265358979323846;
+  if(d == Frame_direction::AXIS) return Eigen::Matrix3d::Identity();
+  return Eigen::Quaterniond::FromTwoVectors(direction_vector(d), Eigen::Vector3d::UnitZ()).toRotationMatrix();
+}
+
+// D(direction_to_z(d)) q0, the frame with d along z. A turn by theta about z turns its pair of
+// coefficients (4 - k, 4 + k) by k theta and keeps coefficient 4; as the frame is symmetric by a
+// turn of 2 pi / s about z (s = 4, 2), only the orders k that s divides are nonzero.
+inline Sh9 frame_with_direction_along_z(Frame_direction d)
+{
+  return d == Frame_direction::AXIS ? axis_aligned_frame() : Sh9(wigner(direction_to_z(d)) * axis_aligned_frame());
+}
+
+// The orders k whose pair of coefficients the frame f has (above rounding).
+inline std::vector<int> frame_orders(const Sh9& f)
+{
+  std::vector<int> orders;
+  for(int k = 1; k <= 4; ++k) if(std::hypot(f[4 - k], f[4 + k]) > 1e-9) orders.push_back(k);
+  return orders;
+}
+
+// The rotation of the frame nearest to q among those with the direction d along the unit vector
+// n: R_n R_z(theta) direction_to_z(d), R_n taking z to n. With p = D(R_n)^T q and f the frame
+// with d along z, p . D(R_z(theta)) f = c + sum_k a_k cos k theta + b_k sin k theta over f's
+// orders k: for one order (an axis) theta = atan2(b_k, a_k) / k; for two (a face diagonal) the
+// best of 48 samples over a turn, refined by Newton's method.
+inline Eigen::Matrix3d nearest_aligned_frame_rotation(const Sh9& q, const Eigen::Vector3d& n,
+                                                      Frame_direction d = Frame_direction::AXIS)
+{
+  const Eigen::Matrix3d rn = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), n).toRotationMatrix();
+  const Sh9 p = wigner(rn).transpose() * q, f = frame_with_direction_along_z(d);
+  const std::vector<int> orders = frame_orders(f);
+  std::vector<double> a, b;
+  for(int k : orders) {
+    a.push_back(p[4 - k] * f[4 - k] + p[4 + k] * f[4 + k]);
+    b.push_back(p[4 - k] * f[4 + k] - p[4 + k] * f[4 - k]);
+  }
+  double theta = (a[0] == 0. && b[0] == 0.) ? 0. : std::atan2(b[0], a[0]) / orders[0];
+  if(orders.size() > 1) {
+    // g(theta) and its first two derivatives
+    auto g = [&](double t, int derivative) {
+      double sum = 0.;
+      for(std::size_t i = 0; i < orders.size(); ++i) {
+        const double k = orders[i], c = std::cos(k * t), s = std::sin(k * t);
+        sum += derivative == 0 ? a[i] * c + b[i] * s : derivative == 1 ? k * (b[i] * c - a[i] * s) : -k * k * (a[i] * c + b[i] * s);
+      }
+      return sum;
+    };
+    const double pi = 3.14159265358979323846;
+    for(int k = 0; k < 48; ++k)
+      if(g(k * pi / 24., 0) > g(theta, 0)) theta = k * pi / 24.;
+    for(int it = 0; it < 8 && g(theta, 2) < 0.; ++it) theta -= g(theta, 1) / g(theta, 2);
+  }
+  return rn * Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ()).toRotationMatrix() * direction_to_z(d);
+}
+
+// The angle (degrees) between v and the nearest direction d (in either sense) of the frame of
+// rotation r.
+inline double angle_to_nearest_direction(const Eigen::Matrix3d& r, const Eigen::Vector3d& v,
+                                         Frame_direction d = Frame_direction::AXIS)
+{
+  // the parts along the nearest direction and across it (atan2: exact near 0, where acos is not)
+  const Eigen::Vector3d w = (r.transpose() * v).cwiseAbs(), u = direction_vector(d);
+  double along = -1., across = 0.;
+  for(int k = 0; k < 3; ++k) {
+    const Eigen::Vector3d uk(u[k], u[(k + 1) % 3], u[(k + 2) % 3]);   // an image of u facing w
+    if(w.dot(uk) > along) { along = w.dot(uk); across = w.cross(uk).norm(); }
+  }
+  return std::atan2(across, along) * 180. / 3.14159265358979323846;
 }
 
 // The rotation of the polar decomposition m = R S (S symmetric positive semi-definite), for m
