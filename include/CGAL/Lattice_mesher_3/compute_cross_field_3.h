@@ -56,8 +56,8 @@ namespace internal {
 // The direction of the frames that the boundary's normal holds, for the lattice of the named
 // parameter `lattice` (BCC if absent): a face diagonal for BCC, whose {110} planes are made of
 // faces of its tetrahedra (its {100} planes cut them into half octahedra, theta_min 45
-// degrees), a cube axis for FCC (half octahedra of theta_min 54.7 degrees) and the hole-less
-// kernel.
+// degrees), a cube axis for FCC (its {100} planes halve its octahedra: theta_min 54.7 degrees)
+// and the hole-less kernel.
 template <typename NamedParameters>
 Frame_direction boundary_frame_direction(const NamedParameters& np)
 {
@@ -183,11 +183,10 @@ the vertices minimize the smoothness energy 1/2 sum_ij w_ij |q_i - q_j|^2 of the
 spherical harmonic coefficients q (w_ij: the number of tetrahedra around the edge ij), as
 follows.
 
-- The direction along the normal is the one whose lattice planes are made of faces of the
-  lattice's tetrahedra, so that the boundary layer is whole tetrahedra of the lattice: a face
-  diagonal of the frame for BCC (its {110} planes; its {100} planes cut its tetrahedra into half
-  octahedra of theta_min 45 degrees), a cube axis for FCC ({100}: half octahedra of theta_min
-  54.7 degrees) and the hole-less kernel.
+- The direction along the normal follows the lattice's boundary layer: a face diagonal of the
+  frame for BCC, whose {110} planes are made of faces of its tetrahedra (its {100} planes cut
+  them into half octahedra of theta_min 45 degrees), a cube axis for FCC, whose {100} planes cut
+  its octahedra into halves of theta_min 54.7 degrees, and for the hole-less kernel.
 - Boundary constraints, surface patch by surface patch: on a patch, that direction along the
   domain's normal (two free coefficients a vertex for an axis, as Palmer et al. 2020, four for a
   face diagonal); on a feature curve (two patches), the frame with an axis along the curve whose
