@@ -191,9 +191,9 @@ follows.
   domain's normal (two free coefficients a vertex for an axis, as Palmer et al. 2020, four for a
   face diagonal); on a feature curve (two patches), the frame with an axis along the curve whose
   two directions across it are nearest to both normals (axes at 45 degrees from their bisector,
-  or face diagonals: axes along the bisector and across it); at a corner (three patches), for
-  axes the frame nearest to the corner's three edges (no three face diagonals are orthogonal:
-  the corner is free for BCC).
+  or face diagonals: axes along the bisector and across it); at a corner (three patches), the
+  frame nearest to the corner's three edges, for BCC too (no three face diagonals are
+  orthogonal, and whole {100} layers fill a box corner).
 - Initialization: the harmonic field under these constraints (a sparse linear solve, Eigen's
   conjugate gradient), projected onto the frames (Ray et al. 2016).
 - Palmer et al.'s modified MBO iterations: a step of diffusion (M + tau_k L) q = M p under the

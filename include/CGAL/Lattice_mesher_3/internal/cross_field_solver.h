@@ -51,8 +51,9 @@ struct Frame_constraint
 // (a crease): the frame with an axis along the crease whose two directions across it are
 // nearest to both normals: axes at 45 degrees from the normals' bisector, or face diagonals
 // (axes along the bisector and across it), each |alpha / 2 - 45| degrees from the normals
-// alpha apart. Three (a corner): for axes, the frame nearest to the corner's three edges, the
-// creases n_i x n_j; no three face diagonals are orthogonal, so a corner is free for them.
+// alpha apart. Three (a corner): the frame nearest to the corner's three edges, the creases
+// n_i x n_j, for face diagonals too: no three of them are orthogonal, and a box corner is filled
+// by whole {100} layers.
 // A vertex on more patches, or whose normals are about parallel, is free.
 template <typename Point_3, typename Domain>
 std::vector<Frame_constraint> boundary_frame_constraints(const Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain,
@@ -92,7 +93,7 @@ std::vector<Frame_constraint> boundary_frame_constraints(const Tetrahedral_mesh_
       c.kind = Frame_constraint::FULL;
       c.frame = frame_rotation_of_axes(m);
     }
-    else if(n.size() == 3 && direction == Frame_direction::AXIS) {
+    else if(n.size() == 3) {
       Eigen::Matrix3d m;
       m << n[0].cross(n[1]), n[1].cross(n[2]), n[2].cross(n[0]);
       if(m.colwise().norm().minCoeff() < parallel) continue;
