@@ -163,7 +163,7 @@ public:
         // the frames with c.direction along c.axis: D(R_n) D(R_z(theta)) f, f the frame with
         // the direction along z, whose pairs of coefficients of its orders turn with theta
         const Sh9_matrix d = wigner(Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), c.axis).toRotationMatrix());
-        const Sh9 f = frame_with_direction_along_z(c.direction);
+        const Sh9& f = frame_with_direction_along_z(c.direction);
         const std::vector<int> orders = frame_orders(f);
         basis_[v].resize(9, 2 * Eigen::Index(orders.size()));
         for(std::size_t i = 0; i < orders.size(); ++i) {

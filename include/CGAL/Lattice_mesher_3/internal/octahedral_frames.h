@@ -196,12 +196,15 @@ inline Eigen::Matrix3d direction_to_z(Frame_direction d)
   return Eigen::Quaterniond::FromTwoVectors(direction_vector(d), Eigen::Vector3d::UnitZ()).toRotationMatrix();
 }
 
-// D(direction_to_z(d)) q0, the frame with d along z. A turn by theta about z turns its pair of
-// coefficients (4 - k, 4 + k) by k theta and keeps coefficient 4; as the frame is symmetric by a
-// turn of 2 pi / s about z (s = 4, 2), only the orders k that s divides are nonzero.
-inline Sh9 frame_with_direction_along_z(Frame_direction d)
+// D(direction_to_z(d)) q0, the frame with d along z, computed once per direction (the projection
+// asks for it at every boundary vertex of every iteration). A turn by theta about z turns its
+// pair of coefficients (4 - k, 4 + k) by k theta and keeps coefficient 4; as the frame is
+// symmetric by a turn of 2 pi / s about z (s = 4, 2), only the orders k that s divides are nonzero.
+inline const Sh9& frame_with_direction_along_z(Frame_direction d)
 {
-  return d == Frame_direction::AXIS ? axis_aligned_frame() : Sh9(wigner(direction_to_z(d)) * axis_aligned_frame());
+  static const std::array<Sh9, 2> frames = { axis_aligned_frame(),
+                                             Sh9(wigner(direction_to_z(Frame_direction::FACE_DIAGONAL)) * axis_aligned_frame()) };
+  return frames[d == Frame_direction::AXIS ? 0 : 1];
 }
 
 // The orders k whose pair of coefficients the frame f has (above rounding).
@@ -221,7 +224,8 @@ inline Eigen::Matrix3d nearest_aligned_frame_rotation(const Sh9& q, const Eigen:
                                                       Frame_direction d = Frame_direction::AXIS)
 {
   const Eigen::Matrix3d rn = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), n).toRotationMatrix();
-  const Sh9 p = wigner(rn).transpose() * q, f = frame_with_direction_along_z(d);
+  const Sh9 p = wigner(rn).transpose() * q;
+  const Sh9& f = frame_with_direction_along_z(d);
   const std::vector<int> orders = frame_orders(f);
   std::vector<double> a, b;
   for(int k : orders) {
