@@ -258,6 +258,39 @@ TEST(Cross_field, CubeFieldIsTheIdentity)
   std::cout << "  cube: " << mesh.points.size() << " vertices, largest angle to the identity " << worst << " degrees\n";
 }
 
+// lambda_1 of the graph Laplacian sets the MBO's diffusion (tau_0 = 50 / lambda_1): on a knot,
+// whose first mode runs along the tube, it is many times the longest coordinate's Rayleigh
+// quotient, and the inverse iteration must find the dense solver's value.
+TEST(Cross_field, FirstEigenvalueOfAKnotMatchesTheDenseSolver)
+{
+  namespace LM = CGAL::Lattice_mesher_3;
+  const LM::Polyhedral_lattice_domain_3<K> knot =
+    LM::read_polyhedral_lattice_domain_3<K>(std::string(LATTICE_MESHER_3_DATA_DIR) + "/meshes/knot1.off");
+  const LM::Tetrahedral_mesh_3<K::Point_3> mesh = CGAL::lattice_mesh_3(knot, Identity(), CGAL::parameters::number_of_vertices(800));
+  const LMi::Weighted_edges edges = LMi::weighted_edges(mesh);
+  const Eigen::Index n = Eigen::Index(mesh.points.size());
+  Eigen::MatrixXd laplacian = Eigen::MatrixXd::Zero(n, n);
+  for(const auto& e : edges) {
+    const int i = e.first.first, j = e.first.second;
+    laplacian(i, i) += e.second; laplacian(j, j) += e.second;
+    laplacian(i, j) -= e.second; laplacian(j, i) -= e.second;
+  }
+  const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(laplacian, Eigen::EigenvaluesOnly).eigenvalues();
+  ASSERT_LT(std::abs(eigenvalues[0]), 1e-9);   // one component
+  const double lambda = LMi::laplacian_first_eigenvalue(mesh, edges);
+  EXPECT_NEAR(lambda, eigenvalues[1], 0.01 * eigenvalues[1]);
+  // the Rayleigh quotient of the coordinate along which the knot is longest: no estimate of it
+  Eigen::MatrixXd p(n, 3);
+  for(Eigen::Index v = 0; v < n; ++v) p.row(v) = LMi::to_eigen(mesh.points[std::size_t(v)]).transpose();
+  int axis = 0;
+  (p.colwise().maxCoeff() - p.colwise().minCoeff()).maxCoeff(&axis);
+  Eigen::VectorXd x = p.col(axis);
+  x.array() -= x.mean();
+  const double quotient = x.dot(laplacian * x) / x.squaredNorm();
+  EXPECT_GT(quotient, 3. * lambda);
+  std::cout << "  knot1, " << n << " vertices: lambda_1 " << lambda << " (dense " << eigenvalues[1] << ", x's quotient " << quotient << ")\n";
+}
+
 // Between the samples the field is a rotation times the interpolated size: here a rotation, and
 // twice one for the frames doubled.
 TEST(Cross_field, InterpolatedFrameIsARotationTimesTheSize)

@@ -143,6 +143,65 @@ struct Cross_field_result
   std::vector<double> energies;
 };
 
+// lambda_1, the smallest nonzero eigenvalue of the graph Laplacian (unit masses), which sets
+// the MBO steps' diffusion: by inverse iteration, orthogonal to the constants of each connected
+// component, from the coordinate along which the mesh is longest. That coordinate's Rayleigh
+// quotient alone is near lambda_1 for a box, but 7 times it on bunny's background mesh and 11
+// times on knot1's, whose first modes run along their lengths; tau_0 would then be as many
+// times too small.
+template <typename Point_3>
+double laplacian_first_eigenvalue(const Tetrahedral_mesh_3<Point_3>& mesh, const Weighted_edges& edges)
+{
+  const Eigen::Index n = Eigen::Index(mesh.points.size());
+  if(n < 2 || edges.empty()) return 1.;
+  std::vector<Eigen::Triplet<double> > triplets;
+  std::vector<int> component(static_cast<std::size_t>(n));
+  for(Eigen::Index v = 0; v < n; ++v) component[std::size_t(v)] = int(v);
+  auto root = [&](int v) { while(component[std::size_t(v)] != v) v = component[std::size_t(v)] = component[std::size_t(component[std::size_t(v)])]; return v; };
+  for(const auto& edge : edges) {
+    const int i = edge.first.first, j = edge.first.second;
+    triplets.emplace_back(i, i, edge.second);
+    triplets.emplace_back(j, j, edge.second);
+    triplets.emplace_back(i, j, -edge.second);
+    triplets.emplace_back(j, i, -edge.second);
+    component[std::size_t(root(i))] = root(j);
+  }
+  Eigen::SparseMatrix<double> laplacian(n, n);
+  laplacian.setFromTriplets(triplets.begin(), triplets.end());
+  std::vector<int> label(static_cast<std::size_t>(n));
+  for(Eigen::Index v = 0; v < n; ++v) label[std::size_t(v)] = root(int(v));
+  auto deflate = [&](Eigen::VectorXd& x) {   // orthogonal to each component's constant
+    std::map<int, std::pair<double, int> > sum;
+    for(Eigen::Index v = 0; v < n; ++v) { auto& s = sum[label[std::size_t(v)]]; s.first += x[v]; ++s.second; }
+    for(Eigen::Index v = 0; v < n; ++v) { const auto& s = sum[label[std::size_t(v)]]; x[v] -= s.first / s.second; }
+  };
+  Eigen::MatrixXd p(n, 3);
+  for(Eigen::Index v = 0; v < n; ++v) p.row(v) = to_eigen(mesh.points[std::size_t(v)]).transpose();
+  int axis = 0;
+  (p.colwise().maxCoeff() - p.colwise().minCoeff()).maxCoeff(&axis);
+  Eigen::VectorXd x = p.col(axis);
+  deflate(x);
+  if(!(x.norm() > 0.)) return 1.;
+  x.normalize();
+  auto rayleigh = [&](const Eigen::VectorXd& y) { return y.dot(laplacian * y) / y.squaredNorm(); };
+  double lambda = rayleigh(x);
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg;   // (L x = b is consistent for b deflated)
+  cg.setTolerance(1e-6);
+  cg.setMaxIterations(1000);
+  cg.compute(laplacian);
+  for(int iteration = 0; iteration < 30; ++iteration) {
+    Eigen::VectorXd y = cg.solveWithGuess(x, x / lambda);
+    deflate(y);
+    if(!(y.norm() > 0.) || !y.allFinite()) break;
+    x = y.normalized();
+    const double next = rayleigh(x);
+    const bool settled = std::abs(next - lambda) < 1e-3 * lambda;
+    lambda = next;
+    if(settled) break;
+  }
+  return lambda > 0. ? lambda : 1.;
+}
+
 class Cross_field_solver
 {
 public:
@@ -151,7 +210,7 @@ public:
     : n_(mesh.points.size()), constraints_(std::move(constraints))
   {
     edges_ = weighted_edges(mesh);
-    lambda1_ = first_eigenvalue(mesh, edges_);
+    lambda1_ = laplacian_first_eigenvalue(mesh, edges_);
     // the unknowns: q_v = B_v x_v + f_v, 9, 2 (an axis along a) or 0 (a fixed frame) per vertex
     basis_.resize(n_);
     offset_.resize(n_ + 1, 0);
@@ -326,24 +385,6 @@ private:
     }
     stiffness_.resize(size, size);
     stiffness_.setFromTriplets(triplets.begin(), triplets.end());
-  }
-
-  // About lambda_1, the smallest nonzero eigenvalue of the graph Laplacian (unit masses): the
-  // Rayleigh quotient of the coordinate along which the mesh is longest, an upper bound within
-  // a small factor (for a box, the first eigenvector is that coordinate's cosine).
-  template <typename Point_3>
-  static double first_eigenvalue(const Tetrahedral_mesh_3<Point_3>& mesh,
-                                 const Weighted_edges& edges)
-  {
-    Eigen::MatrixXd x(mesh.points.size(), 3);
-    for(std::size_t v = 0; v < mesh.points.size(); ++v) x.row(Eigen::Index(v)) = to_eigen(mesh.points[v]).transpose();
-    int axis = 0;
-    (x.colwise().maxCoeff() - x.colwise().minCoeff()).maxCoeff(&axis);
-    Eigen::VectorXd f = x.col(axis);
-    f.array() -= f.mean();
-    double numerator = 0.;
-    for(const auto& edge : edges) numerator += edge.second * (f[edge.first.first] - f[edge.first.second]) * (f[edge.first.first] - f[edge.first.second]);
-    return numerator / (std::max)(f.squaredNorm(), 1e-300);
   }
 
   std::size_t n_;
