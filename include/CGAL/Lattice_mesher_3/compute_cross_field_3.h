@@ -246,7 +246,7 @@ its tetrahedra (see `Discrete_frame_field_3`): it is a rotation at every point. 
     \cgalParamDefault{0}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the threads of the background mesh}
+    \cgalParamDescription{the threads of the background mesh and of the solver's sparse products (Eigen's OpenMP threads, set for the call)}
     \cgalParamType{int}
     \cgalParamDefault{1}
   \cgalParamNEnd
@@ -280,7 +280,7 @@ auto compute_cross_field_3(const MeshDomain& domain, const NamedParameters& np =
         : lattice_mesh_3(domain, identity, common.number_of_vertices(choose_parameter(get_parameter(np, internal_np::number_of_vertices), 4000.)));
     const bool features = choose_parameter(get_parameter(np, internal_np::align_to_features), true);
     internal::Cross_field_solver solver(mesh, internal::boundary_frame_constraints(mesh, domain, features, internal::boundary_frame_direction(np)));
-    internal::Cross_field_result result = solver.solve(iterations);
+    internal::Cross_field_result result = solver.solve(iterations, choose_parameter(get_parameter(np, internal_np::number_of_threads), 1));
     std::vector<typename Traits::Matrix_3> frames(result.rotations.begin(), result.rotations.end());
     return Discrete_frame_field_3<Traits>(std::move(mesh), std::move(frames));
   }
