@@ -279,8 +279,9 @@ auto compute_cross_field_3(const MeshDomain& domain, const NamedParameters& np =
         ? lattice_mesh_3(domain, identity, common.edge_length(length))
         : lattice_mesh_3(domain, identity, common.number_of_vertices(choose_parameter(get_parameter(np, internal_np::number_of_vertices), 4000.)));
     const bool features = choose_parameter(get_parameter(np, internal_np::align_to_features), true);
+    const internal::Eigen_threads_scope eigen_threads(choose_parameter(get_parameter(np, internal_np::number_of_threads), 1));
     internal::Cross_field_solver solver(mesh, internal::boundary_frame_constraints(mesh, domain, features, internal::boundary_frame_direction(np)));
-    internal::Cross_field_result result = solver.solve(iterations, choose_parameter(get_parameter(np, internal_np::number_of_threads), 1));
+    internal::Cross_field_result result = solver.solve(iterations);
     std::vector<typename Traits::Matrix_3> frames(result.rotations.begin(), result.rotations.end());
     return Discrete_frame_field_3<Traits>(std::move(mesh), std::move(frames));
   }

@@ -168,12 +168,18 @@ double laplacian_first_eigenvalue(const Tetrahedral_mesh_3<Point_3>& mesh, const
   }
   Eigen::SparseMatrix<double> laplacian(n, n);
   laplacian.setFromTriplets(triplets.begin(), triplets.end());
-  std::vector<int> label(static_cast<std::size_t>(n));
-  for(Eigen::Index v = 0; v < n; ++v) label[std::size_t(v)] = root(int(v));
+  std::vector<int> label(static_cast<std::size_t>(n), -1), number(static_cast<std::size_t>(n), -1);
+  std::vector<double> size;   // of each component, numbered from 0
+  for(Eigen::Index v = 0; v < n; ++v) {
+    int& c = number[std::size_t(root(int(v)))];
+    if(c < 0) { c = int(size.size()); size.push_back(0.); }
+    label[std::size_t(v)] = c;
+    size[std::size_t(c)] += 1.;
+  }
   auto deflate = [&](Eigen::VectorXd& x) {   // orthogonal to each component's constant
-    std::map<int, std::pair<double, int> > sum;
-    for(Eigen::Index v = 0; v < n; ++v) { auto& s = sum[label[std::size_t(v)]]; s.first += x[v]; ++s.second; }
-    for(Eigen::Index v = 0; v < n; ++v) { const auto& s = sum[label[std::size_t(v)]]; x[v] -= s.first / s.second; }
+    std::vector<double> sum(size.size(), 0.);
+    for(Eigen::Index v = 0; v < n; ++v) sum[std::size_t(label[std::size_t(v)])] += x[v];
+    for(Eigen::Index v = 0; v < n; ++v) x[v] -= sum[std::size_t(label[std::size_t(v)])] / size[std::size_t(label[std::size_t(v)])];
   };
   Eigen::MatrixXd p(n, 3);
   for(Eigen::Index v = 0; v < n; ++v) p.row(v) = to_eigen(mesh.points[std::size_t(v)]).transpose();
@@ -201,6 +207,18 @@ double laplacian_first_eigenvalue(const Tetrahedral_mesh_3<Point_3>& mesh, const
   }
   return lambda > 0. ? lambda : 1.;
 }
+
+// Eigen's OpenMP threads set to `n` for the scope: its parallel sparse products (the conjugate
+// gradients of lambda_1 and of the MBO steps) otherwise take all the machine's threads,
+// whatever the caller asked for.
+struct Eigen_threads_scope
+{
+  int before = Eigen::nbThreads();
+  explicit Eigen_threads_scope(int n) { Eigen::setNbThreads(n); }
+  ~Eigen_threads_scope() { Eigen::setNbThreads(before); }
+  Eigen_threads_scope(const Eigen_threads_scope&) = delete;
+  Eigen_threads_scope& operator=(const Eigen_threads_scope&) = delete;
+};
 
 class Cross_field_solver
 {
@@ -239,16 +257,8 @@ public:
   // The initialization and `iterations` MBO steps (fewer if the energy changes by less than
   // 1e-5 of itself), from whose iterate of least energy up to `iterations` sweeps of local
   // relaxation. The energies: after the initialization, each MBO step, the best step, each sweep.
-  // Eigen's sparse products run on `threads` OpenMP threads meanwhile (by default they take all
-  // the machine's, whatever the caller asked for).
-  Cross_field_result solve(int iterations, int threads = 1)
+  Cross_field_result solve(int iterations)
   {
-    struct Eigen_threads
-    {
-      int before = Eigen::nbThreads();
-      explicit Eigen_threads(int n) { Eigen::setNbThreads(n); }
-      ~Eigen_threads() { Eigen::setNbThreads(before); }
-    } eigen_threads(threads);
     Cross_field_result result;
     Eigen::VectorXd x = minimize(0., std::vector<Sh9>(n_, Sh9::Zero()), Eigen::VectorXd());
     result.rotations.resize(n_);
