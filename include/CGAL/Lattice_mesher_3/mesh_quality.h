@@ -132,13 +132,15 @@ int measure_threads(const NamedParameters& np)
 
 // Runs f(i) for i in [0, n) on `threads` threads (OpenMP's default: all). OpenMP forbids
 // exceptions from leaving the loop, so the one of the lowest index is rethrown afterwards: the
-// same error for any thread count.
+// same error for any thread count. A thread takes `chunk` consecutive items at a time (0: an
+// equal share of them): small chunks balance items of unequal cost.
 template <typename F>
-void parallel_for_rethrow(std::size_t n, const F& f, int threads = default_number_of_threads())
+void parallel_for_rethrow(std::size_t n, const F& f, int threads = default_number_of_threads(), std::size_t chunk = 0)
 {
   std::exception_ptr error;
   std::ptrdiff_t error_index = std::ptrdiff_t(n);
-#pragma omp parallel for num_threads(threads) schedule(static)
+  if(chunk == 0) chunk = (std::max)(std::size_t(1), (n + std::size_t(threads) - 1) / std::size_t(threads));
+#pragma omp parallel for num_threads(threads) schedule(dynamic, chunk)
   for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i) {
     try {
       f(std::size_t(i));
