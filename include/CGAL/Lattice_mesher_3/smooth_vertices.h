@@ -64,12 +64,6 @@ struct Smoothing_options
   double edge_length = 0.;
   double lattice_tolerance = 0.1;
   int max_passes = 3;
-  /// A move sends its vertex's neighbours into the next pass if its star had a tetrahedron
-  /// below settle_angle or the move lowered the star's penalty by settle_ratio of it: searching
-  /// again around moves that only polish a good star cost a sixth of the searches for nothing
-  /// (Design chapter).
-  double settle_angle = 45.;
-  double settle_ratio = .1;
   int threads = 1;
   /// One flag per vertex, or empty: then the first pass searches only the vertices that share a
   /// tetrahedron with a flagged one (those around the moves of an earlier smoothing).
@@ -261,8 +255,7 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     }
   };
 
-  std::vector<char> active(mesh.points.size(), 1), moved(mesh.points.size(), 0);
-  // pattern search for vertex v; returns the number of accepted moves and sets moved[v]
+  // pattern search for vertex v; returns the number of accepted moves
   auto move_vertex = [&](int v) -> std::size_t {
     const Eigen::Vector3d x = internal::to_eigen(mesh.points[v]);
     // Steps are measured in the isotropic space (the frozen B of a tetrahedron of the star):
@@ -315,13 +308,8 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     std::vector<Star_tet> st;
     gather_star(v, st);
     Score best = star_quality(st, mesh.points[v], HUGE_VAL);
-    const Score initial = best;
     worst_first(st);
     std::size_t accepted = 0;
-    auto settle = [&] {
-      moved[v] = accepted > 0 && (initial.worst < o.settle_angle || best.penalty <= (1. - o.settle_ratio) * initial.penalty);
-      return accepted;
-    };
     auto attempt = [&](const Eigen::Vector3d& y, Eigen::Vector3d& at) {
       Point_3 candidate(y[0], y[1], y[2]);
       // a boundary vertex's candidate is first scored where it is, in the tangent plane: most
@@ -344,19 +332,20 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     // stop a descent short. (Design chapter: a quarter less time, the same quality.)
     if(best.worst < o.floor_angle || basis.empty()) {
       internal::pattern_search(x, directions, mean_edge, attempt);
-      return settle();
+      return accepted;
     }
     auto penalty = [&](const Eigen::Vector3d& y) { return star_quality(st, Point_3(y[0], y[1], y[2]), HUGE_VAL).penalty; };
     const Eigen::Vector3d descended =
       internal::gradient_descent(x, basis, b, mean_edge, penalty, [&] { return best.penalty; }, attempt);
     internal::pattern_search(descended, directions, mean_edge, attempt, { .03 });
-    return settle();
+    return accepted;
   };
 
   std::size_t moves = 0;
   // A vertex whose star did not change since its last search would only search again: after the
   // first pass, only the vertices sharing a tetrahedron with a moved one are candidates.
   // around_vertices() stands for the moves of an earlier pass.
+  std::vector<char> active(mesh.points.size(), 1), moved(mesh.points.size(), 0);
   auto activate_around_moved = [&] {
     active = internal::vertices_around(mesh.tets, moved);
     std::fill(moved.begin(), moved.end(), 0);
@@ -397,7 +386,9 @@ std::size_t smooth_vertices(Tetrahedral_mesh_3<Point_3>& mesh, const Domain& dom
     for(const std::vector<int>& members : classes) {
 #pragma omp parallel for num_threads(o.threads) schedule(dynamic, 16) reduction(+:pass_moves)
       for(std::ptrdiff_t k = 0; k < std::ptrdiff_t(members.size()); ++k) {
-        pass_moves += move_vertex(members[k]);
+        const std::size_t accepted = move_vertex(members[k]);
+        moved[members[k]] = accepted > 0;
+        pass_moves += accepted;
       }
     }
     activate_around_moved();
@@ -431,8 +422,7 @@ surface and sharp-edge vertices on the feature curves (each candidate is project
 boundary vertex's candidate only if it scores within a tenth of the best in the tangent plane,
 where most lose by far), fixed
 vertices (corners) do not move. After the first pass, only vertices sharing a
-tetrahedron with a vertex moved in the previous pass are searched again (a move that lowered the
-penalty of a star without a tetrahedron below 45 degrees by less than a tenth does not count). A move is kept only if no tetrahedron of the star
+tetrahedron with a vertex moved in the previous pass are searched again. A move is kept only if no tetrahedron of the star
 is inverted (exact orientation tests), the shortfall falls, the star's smallest angle does not
 fall below the floor and no other tetrahedron of the star falls below it (unless the star has one
 below half the floor), so the boundary stays on the surface and the mesh stays valid. Needs
