@@ -415,7 +415,7 @@ public:
             const int t = list[looked[k]];
             if(std::isnan(measure_[t].angle)) measure_[t] = measure_now(t);
             plans[k] = look(t, c);
-          }, o_.threads, 2);   // in pairs: most looks end at once, an edge removal's take long
+          }, o_.threads, 2);   // in pairs: most looks end at once, an edge removal's takes long
         } catch(...) { looking_in_parallel_ = false; throw; }
         looking_in_parallel_ = false;
       }

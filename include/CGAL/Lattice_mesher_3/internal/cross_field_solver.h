@@ -21,6 +21,8 @@
 #include <CGAL/Lattice_mesher_3/frame_fields.h>
 #include <CGAL/Lattice_mesher_3/internal/octahedral_frames.h>
 
+#include <CGAL/assertions.h>
+
 #include <Eigen/Sparse>
 #include <Eigen/IterativeLinearSolvers>
 
@@ -389,8 +391,8 @@ private:
     };
     for(std::size_t v = 0; v < n_; ++v)
       if(basis_[v].cols() > 0) add_block(v, v, basis_[v].transpose() * basis_[v]);
-    mass_.resize(size, size);
-    mass_.setFromTriplets(triplets.begin(), triplets.end());
+    Sparse mass(size, size);
+    mass.setFromTriplets(triplets.begin(), triplets.end());
     triplets.clear();
     for(const auto& edge : edges_) {
       const std::size_t i = std::size_t(edge.first.first), j = std::size_t(edge.first.second);
@@ -408,20 +410,13 @@ private:
     }
     stiffness_.resize(size, size);
     stiffness_.setFromTriplets(triplets.begin(), triplets.end());
-    // M's and L's values on the pattern of M + L (both patterns are in it, rows sorted)
-    system_ = mass_ + stiffness_;
-    mass_values_.assign(std::size_t(system_.nonZeros()), 0.);
-    stiffness_values_.assign(std::size_t(system_.nonZeros()), 0.);
-    for(Eigen::Index c = 0; c < system_.outerSize(); ++c) {
-      Sparse::InnerIterator m(mass_, c), l(stiffness_, c);
-      for(Eigen::Index k = system_.outerIndexPtr()[c]; k < system_.outerIndexPtr()[c + 1]; ++k) {
-        const Eigen::Index row = system_.innerIndexPtr()[k];
-        while(m && m.row() < row) ++m;
-        while(l && l.row() < row) ++l;
-        if(m && m.row() == row) mass_values_[std::size_t(k)] = m.value();
-        if(l && l.row() == row) stiffness_values_[std::size_t(k)] = l.value();
-      }
-    }
+    // M's and L's values on the pattern of M + L: a sum with the other's zeros has that pattern
+    // (Eigen keeps every entry of either operand)
+    auto values = [](const Sparse& a) { return std::vector<double>(a.valuePtr(), a.valuePtr() + a.nonZeros()); };
+    system_ = mass + stiffness_;
+    mass_values_ = values(Sparse(mass + 0. * stiffness_));
+    stiffness_values_ = values(Sparse(0. * mass + stiffness_));
+    CGAL_assertion(mass_values_.size() == std::size_t(system_.nonZeros()) && stiffness_values_.size() == mass_values_.size());
   }
 
   std::size_t n_;
@@ -431,7 +426,7 @@ private:
   std::vector<Eigen::MatrixXd> basis_;
   std::vector<int> offset_;
   std::vector<Sh9> fixed_;
-  Sparse mass_, stiffness_, system_;
+  Sparse stiffness_, system_;
   std::vector<double> mass_values_, stiffness_values_;
   Eigen::VectorXd stiffness_rhs_;
 };
