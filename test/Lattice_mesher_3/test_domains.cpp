@@ -425,6 +425,37 @@ TEST(PolyhedralDomain, Fandisk)
   EXPECT_EQ(corner_ends, 2 * d.number_of_curves());
 }
 
+// anchor's long CAD triangles: the samples cover the surface as on the cube, at most
+// area / g^2 + edge length / g + vertices of them (g = spacing / 2; a grid in each triangle's
+// axes puts 741,349 at a spacing of 0.014, 13 times the first term)
+TEST(PolyhedralDomain, AnchorSampleSurface)
+{
+  const Polyhedral_domain d = LM::read_polyhedral_lattice_domain_3<K>(
+      std::string(LATTICE_MESHER_3_DATA_DIR) + "/meshes/anchor.off");
+  const double spacing = .014, g = .5 * spacing;
+  std::vector<Point_3> samples;
+  d.sample_surface(spacing, std::back_inserter(samples));
+  double edges = 0.;
+  for(auto e : d.boundary().edges())
+    edges += std::sqrt(CGAL::squared_distance(d.boundary().point(d.boundary().vertex(e, 0)),
+                                              d.boundary().point(d.boundary().vertex(e, 1))));
+  const double bound = d.area() / (g * g) + edges / g + double(d.boundary().number_of_vertices());
+  EXPECT_LE(double(samples.size()), bound);
+  EXPECT_GT(double(samples.size()), .5 * d.area() / (g * g));
+  for(std::size_t i = 0; i < samples.size(); i += 97)
+    EXPECT_LT(d.project_on_surface(samples[i]).squared_distance, 1e-20);
+  CGAL::Random rng(3);
+  const CGAL::Bbox_3 box = d.bbox();
+  for(int i = 0; i < 200; ++i) {
+    const Point_3 s = d.project_on_surface(Point_3(rng.get_double(box.xmin(), box.xmax()), rng.get_double(box.ymin(), box.ymax()),
+                                                   rng.get_double(box.zmin(), box.zmax()))).point;
+    double nearest = 1e9;
+    for(const Point_3& t : samples)
+      nearest = (std::min)(nearest, CGAL::squared_distance(s, t));
+    ASSERT_LT(std::sqrt(nearest), spacing) << s;
+  }
+}
+
 TEST(PolyhedralDomain, ConcurrentQueries)
 {
   const Polyhedral_domain d = LM::read_polyhedral_lattice_domain_3<K>(

@@ -509,23 +509,40 @@ Boundary_distances_3 boundary_distances(const Tetrahedral_mesh_3<Point_3>& mesh,
   triangles.reserve(mesh.boundary_faces.size());
   for(const std::array<int, 3>& f : mesh.boundary_faces)
     triangles.emplace_back(to_double(mesh.points[f[0]]), to_double(mesh.points[f[1]]), to_double(mesh.points[f[2]]));
-  // mesh -> surface: a barycentric grid of n x n sub-triangles per face, n set by its longest edge
-  std::vector<Boundary_distances_3> mesh_to_surface(triangles.size());
-  internal::parallel_for_rethrow(triangles.size(), [&](std::size_t f) {
-    const Eigen::Vector3d a = internal::to_eigen(triangles[f][0]);
-    const Eigen::Vector3d ab = internal::to_eigen(triangles[f][1]) - a;
-    const Eigen::Vector3d ac = internal::to_eigen(triangles[f][2]) - a;
+  // mesh -> surface: the boundary vertices, points at most `spacing` apart on the boundary edges
+  // and a barycentric grid of n x n sub-triangles inside each face (n set by its longest edge),
+  // each point once
+  std::vector<int> vertices;
+  std::vector<std::array<int, 2> > edges;
+  for(const std::array<int, 3>& f : mesh.boundary_faces)
+    for(int e = 0; e < 3; ++e) {
+      vertices.push_back(f[e]);
+      edges.push_back({ (std::min)(f[e], f[(e + 1) % 3]), (std::max)(f[e], f[(e + 1) % 3]) });
+    }
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  auto at = [&](int v) { return internal::to_eigen(to_double(mesh.points[std::size_t(v)])); };
+  std::vector<Eigen::Vector3d> points;
+  for(int v : vertices) points.push_back(at(v));
+  for(const std::array<int, 2>& e : edges) {
+    const Eigen::Vector3d a = at(e[0]), ab = at(e[1]) - a;
+    const int n = (std::max)(1, int(std::ceil(ab.norm() / spacing)));
+    for(int i = 1; i < n; ++i) points.push_back(a + (double(i) / n) * ab);
+  }
+  for(const typename DK::Triangle_3& t : triangles) {
+    const Eigen::Vector3d a = internal::to_eigen(t[0]), ab = internal::to_eigen(t[1]) - a, ac = internal::to_eigen(t[2]) - a;
     const double longest = (std::max)({ ab.norm(), ac.norm(), (ac - ab).norm() });
     const int n = (std::max)(1, int(std::ceil(longest / spacing)));
-    Boundary_distances_3& r = mesh_to_surface[f];
-    for(int i = 0; i <= n; ++i)
-      for(int j = 0; i + j <= n; ++j) {
-        const Eigen::Vector3d q = a + (double(i) / n) * ab + (double(j) / n) * ac;
-        const Point_3 p(q[0], q[1], q[2]);
-        const double d = std::sqrt(CGAL::to_double(domain.project_on_surface(p).squared_distance));
-        r.hausdorff = (std::max)(r.hausdorff, d);
-        r.over_size = (std::max)(r.over_size, d / size(p));
-      }
+    for(int i = 1; i < n; ++i)
+      for(int j = 1; i + j < n; ++j) points.push_back(a + (double(i) / n) * ab + (double(j) / n) * ac);
+  }
+  std::vector<Boundary_distances_3> mesh_to_surface(points.size());
+  internal::parallel_for_rethrow(points.size(), [&](std::size_t i) {
+    const Point_3 p(points[i][0], points[i][1], points[i][2]);
+    const double d = std::sqrt(CGAL::to_double(domain.project_on_surface(p).squared_distance));
+    mesh_to_surface[i] = { d, d / size(p) };
   }, threads);
 
   // surface -> mesh; the tree's search structures are built before the concurrent queries
