@@ -192,10 +192,8 @@ public:
   /// writes the vertices, points at most `spacing / 2` apart on the edges, and inside each
   /// triangle rows of points at most `spacing / 2` apart, parallel to its longest edge and at
   /// most `spacing / 2` from one another, so that every point of the surface is closer than
-  /// `spacing` to a sample: about 4 area / spacing^2 points, however thin the triangles (a grid
-  /// in each triangle's own axes, as `Polygon_mesh_processing::sample_triangle_mesh()` lays it,
-  /// puts 13 times as many on a CAD model's long triangles: anchor). Throws
-  /// `std::invalid_argument` if `spacing` is not positive.
+  /// `spacing` to a sample: about 4 area / spacing^2 points, however thin the triangles (CAD
+  /// models' long ones included). Throws `std::invalid_argument` if `spacing` is not positive.
   template <typename OutputIterator>
   OutputIterator sample_surface(double spacing, OutputIterator out) const
   {
