@@ -12,6 +12,7 @@
 
 #include <CGAL/Lattice_mesher_3/Boundary_projection_3.h>
 #include <CGAL/Lattice_mesher_3/internal/surface_cell_grid.h>
+#include <CGAL/Lattice_mesher_3/internal/triangle_sampling.h>
 #include <CGAL/Lattice_mesher_3/internal/winding_number.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -202,34 +203,14 @@ public:
                                   + std::to_string(spacing) + " is not positive");
     const Surface_mesh& m = m_data->boundary;
     const double g = .5 * spacing;
-    // points dividing ab into pieces at most g long, a and b excepted
-    auto divide = [&](const Point_3& a, const Point_3& b, double length) {
-      const int n = int(std::ceil(length / g));
-      for(int i = 1; i < n; ++i) *out++ = a + (double(i) / n) * (b - a);
-    };
-    auto length = [](const Vector_3& v) { return std::sqrt(CGAL::to_double(v.squared_length())); };
     for(typename Surface_mesh::Vertex_index v : m.vertices()) *out++ = m.point(v);
-    for(typename Surface_mesh::Edge_index e : m.edges()) {
-      const Point_3& a = m.point(m.vertex(e, 0));
-      const Point_3& b = m.point(m.vertex(e, 1));
-      divide(a, b, length(b - a));
-    }
+    for(typename Surface_mesh::Edge_index e : m.edges())
+      out = internal::sample_segment(m.point(m.vertex(e, 0)), m.point(m.vertex(e, 1)), g, out);
     for(typename Surface_mesh::Face_index f : m.faces()) {
       std::array<Point_3, 3> p;
-      int i = 0;
-      for(typename Surface_mesh::Vertex_index v : vertices_around_face(m.halfedge(f), m)) p[std::size_t(i++)] = m.point(v);
-      std::array<double, 3> side;   // side[k]: from p[k] to p[k + 1]
-      for(int k = 0; k < 3; ++k) side[std::size_t(k)] = length(p[std::size_t((k + 1) % 3)] - p[std::size_t(k)]);
-      const int longest = int(std::max_element(side.begin(), side.end()) - side.begin());
-      std::rotate(p.begin(), p.begin() + longest, p.end());
-      const double base = side[std::size_t(longest)];
-      if(!(base > 0.)) continue;
-      const double height = length(CGAL::cross_product(p[1] - p[0], p[2] - p[0])) / base;
-      const int rows = int(std::ceil(height / g));
-      for(int j = 1; j < rows; ++j) {
-        const double s = double(j) / rows;   // of the way from the longest edge to the opposite vertex
-        divide(p[0] + s * (p[2] - p[0]), p[1] + s * (p[2] - p[1]), (1. - s) * base);
-      }
+      std::size_t i = 0;
+      for(typename Surface_mesh::Vertex_index v : vertices_around_face(m.halfedge(f), m)) p[i++] = m.point(v);
+      out = internal::sample_triangle_inside(p, g, out);
     }
     return out;
   }

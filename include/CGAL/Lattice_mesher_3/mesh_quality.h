@@ -14,6 +14,7 @@
 #include <CGAL/Lattice_mesher_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Lattice_mesher_3/frame_fields.h>
 #include <CGAL/Lattice_mesher_3/internal/stage_parameters.h>
+#include <CGAL/Lattice_mesher_3/internal/triangle_sampling.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -509,9 +510,7 @@ Boundary_distances_3 boundary_distances(const Tetrahedral_mesh_3<Point_3>& mesh,
   triangles.reserve(mesh.boundary_faces.size());
   for(const std::array<int, 3>& f : mesh.boundary_faces)
     triangles.emplace_back(to_double(mesh.points[f[0]]), to_double(mesh.points[f[1]]), to_double(mesh.points[f[2]]));
-  // mesh -> surface: the boundary vertices, points at most `spacing` apart on the boundary edges
-  // and a barycentric grid of n x n sub-triangles inside each face (n set by its longest edge),
-  // each point once
+  // mesh -> surface: the boundary vertices, edges and faces, each once, sampled at `spacing`
   std::vector<int> vertices;
   std::vector<std::array<int, 2> > edges;
   for(const std::array<int, 3>& f : mesh.boundary_faces)
@@ -523,26 +522,17 @@ Boundary_distances_3 boundary_distances(const Tetrahedral_mesh_3<Point_3>& mesh,
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  auto at = [&](int v) { return internal::to_eigen(to_double(mesh.points[std::size_t(v)])); };
-  std::vector<Eigen::Vector3d> points;
-  for(int v : vertices) points.push_back(at(v));
-  for(const std::array<int, 2>& e : edges) {
-    const Eigen::Vector3d a = at(e[0]), ab = at(e[1]) - a;
-    const int n = (std::max)(1, int(std::ceil(ab.norm() / spacing)));
-    for(int i = 1; i < n; ++i) points.push_back(a + (double(i) / n) * ab);
-  }
-  for(const typename DK::Triangle_3& t : triangles) {
-    const Eigen::Vector3d a = internal::to_eigen(t[0]), ab = internal::to_eigen(t[1]) - a, ac = internal::to_eigen(t[2]) - a;
-    const double longest = (std::max)({ ab.norm(), ac.norm(), (ac - ab).norm() });
-    const int n = (std::max)(1, int(std::ceil(longest / spacing)));
-    for(int i = 1; i < n; ++i)
-      for(int j = 1; i + j < n; ++j) points.push_back(a + (double(i) / n) * ab + (double(j) / n) * ac);
-  }
+  std::vector<Point_3> points;
+  for(int v : vertices) points.push_back(mesh.points[std::size_t(v)]);
+  for(const std::array<int, 2>& e : edges)
+    internal::sample_segment(mesh.points[std::size_t(e[0])], mesh.points[std::size_t(e[1])], spacing, std::back_inserter(points));
+  for(const std::array<int, 3>& f : mesh.boundary_faces)
+    internal::sample_triangle_inside(std::array<Point_3, 3>{ mesh.points[std::size_t(f[0])], mesh.points[std::size_t(f[1])], mesh.points[std::size_t(f[2])] },
+                                     spacing, std::back_inserter(points));
   std::vector<Boundary_distances_3> mesh_to_surface(points.size());
   internal::parallel_for_rethrow(points.size(), [&](std::size_t i) {
-    const Point_3 p(points[i][0], points[i][1], points[i][2]);
-    const double d = std::sqrt(CGAL::to_double(domain.project_on_surface(p).squared_distance));
-    mesh_to_surface[i] = { d, d / size(p) };
+    const double d = std::sqrt(CGAL::to_double(domain.project_on_surface(points[i]).squared_distance));
+    mesh_to_surface[i] = { d, d / size(points[i]) };
   }, threads);
 
   // surface -> mesh; the tree's search structures are built before the concurrent queries
