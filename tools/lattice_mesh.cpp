@@ -390,6 +390,26 @@ static Field shape_sized_field(const Domain& domain, const Field& field, LM::int
   return Field([sized](const Point_3& x) { return sized.frame(x); });
 }
 
+// A boundary farther than 1.5 times the local size from the surface (the sweep's limit) is a
+// part lost or a bulge, which the quality table alone would leave unnoticed: where, and why when
+// the size there is the smallest that the sizing may give (a part thinner than that).
+static void warn_if_part_lost(const LM::Boundary_distances_3<Point_3>& d, double size, double edge_length, const Options& o)
+{
+  if(!(d.over_size > 1.5)) return;
+  const Point_3& w = d.worst_sample;
+  if(d.worst_on_surface)
+    std::fprintf(stderr, "lattice-mesh: warning: the mesh lacks a part of the domain: the surface at (%.6g, %.6g, %.6g) is %.4g "
+                 "from its boundary, %.3g times the size there (%.4g)", w.x(), w.y(), w.z(), d.over_size * size, d.over_size, size);
+  else
+    std::fprintf(stderr, "lattice-mesh: warning: the mesh's boundary at (%.6g, %.6g, %.6g) is %.4g from the surface, %.3g times "
+                 "the size there (%.4g)", w.x(), w.y(), w.z(), d.over_size * size, d.over_size, size);
+  const double smallest = o.min_edge_length > 0. ? o.min_edge_length : .25 * edge_length;
+  if(o.cells_across > 0. && size <= 1.001 * smallest)
+    std::fprintf(stderr, ", the smallest size: a part thinner than that is lost there; a smaller --min-edge-length (default "
+                 "l*/4), with more vertices, keeps it");
+  std::fprintf(stderr, "\n");
+}
+
 // Meshes `domain`; `times` holds the stages already run (reading the domain and the field).
 template <typename Domain>
 static int run(const Domain& domain, const Field_choice& given, const Options& o, LM::Stage_times_visitor times)
@@ -450,10 +470,11 @@ static int run(const Domain& domain, const Field_choice& given, const Options& o
   const LM::Mesh_validity_report validity = LM::check_tetrahedral_mesh(mesh);
   LM::Mesh_quality_3 q = LM::compute_mesh_quality(mesh, field, CGAL::parameters::lattice(meshed.lattice).number_of_threads(o.threads));
   // the local size: the longest edge of the lattice cube there, which the sizing shrinks
-  const LM::Boundary_distances_3 distances = LM::boundary_distances(mesh, domain, 0.25 * meshed.edge_length,
-      [&](const Point_3& x) { return meshed.edge_length * field.frame(x).colwise().norm().maxCoeff(); },
-      CGAL::parameters::number_of_threads(o.threads));
+  auto local_size = [&](const Point_3& x) { return meshed.edge_length * field.frame(x).colwise().norm().maxCoeff(); };
+  const LM::Boundary_distances_3<Point_3> distances = LM::boundary_distances(mesh, domain, 0.25 * meshed.edge_length,
+      local_size, CGAL::parameters::number_of_threads(o.threads));
   times.add("check and quality", std::chrono::duration<double>(std::chrono::steady_clock::now() - checked).count());
+  warn_if_part_lost(distances, local_size(distances.worst_sample), meshed.edge_length, o);
   q.hausdorff = distances.hausdorff;
   q.hausdorff_over_size = distances.over_size;
   q.edge_length = meshed.edge_length;

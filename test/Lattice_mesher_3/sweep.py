@@ -10,12 +10,13 @@
 #     triangles, once in each direction), the smallest dihedral angle at least --min-angle
 #     degrees, the Hausdorff distance to the input (measured by lattice-mesh, --stats) at most
 #     --hausdorff times l* and, sample by sample, at most --hausdorff times the mesh's local size
-#     (the longest boundary edge at the sample);
+#     (the longest boundary edge at the sample); lattice-mesh must warn of a part lost exactly when
+#     that local ratio exceeds 1.5;
 #   - any other input is open and must be refused with a message naming the problem;
 #   - no crash, no time-out.
 # Models listed in --known-failures (a line "model: reason") may fall short of the angle and
-# distance thresholds without failing the sweep (a crash, a time-out, a refusal or an invalid
-# mesh still fails it); a listed model that now passes is reported, so that the list only shrinks.
+# distance thresholds without failing the sweep (a crash, a time-out, a refusal, an invalid
+# mesh or a missing warning still fails it); a listed model that now passes is reported, so that the list only shrinks.
 #
 #   sweep.py --lattice-mesh BIN --models DIR [--vertices N] [--shard I/N] [--out DIR] [--csv FILE]
 #            [--only a.off,b.off] [--option=--cells-across --option=3 ...]
@@ -195,6 +196,10 @@ def run_model(args, model):
             problems.append('Hausdorff %.4g > %g l* (l* = %.4g)' % (stats['hausdorff'], args.hausdorff, stats['edge_length']))
         if not 0 <= stats['hausdorff_over_size'] <= args.hausdorff:
             problems.append('Hausdorff %.3g times the local size > %g' % (stats['hausdorff_over_size'], args.hausdorff))
+        warned = 'the mesh lacks a part' in err or "the mesh's boundary at" in err
+        if warned != (stats['hausdorff_over_size'] > 1.5):
+            problems.append('the warning of a part lost %s (Hausdorff %.3g times the local size)' % (
+                'given' if warned else 'not given', stats['hausdorff_over_size']))
         if rc == 2:
             problems.append('lattice-mesh reported an invalid mesh')
         row.update(outcome='fail' if problems else 'valid', detail='; '.join(problems))
@@ -248,7 +253,8 @@ def main():
     # a listed model may fall short of the quality thresholds, never crash, hang or be refused
     def excused(r):
         return r['model'] in known and r['outcome'] == 'fail' and r['vertices'] != '' and \
-            'invalid' not in r['detail'] and 'not positive' not in r['detail'] and 'manifold' not in r['detail']
+            'invalid' not in r['detail'] and 'not positive' not in r['detail'] and 'manifold' not in r['detail'] and \
+            'warning' not in r['detail']
     failed = [r for r in rows if r['outcome'] == 'fail' and not excused(r)]
     expected = [r for r in rows if excused(r)]
     fixed = [r['model'] for r in rows if r['outcome'] != 'fail' and r['model'] in known]

@@ -601,13 +601,21 @@ TEST(Hausdorff, RelativeToTheLocalSize)
 {
   const Unit_cube_domain cube;
   auto size = [](const Point& p) { return .5 - .25 * p.x(); };
-  const Boundary_distances_3 shifted = boundary_distances(cube_mesh(3, 1., .1), cube, 0.05, size);
+  const Boundary_distances_3<Point> shifted = boundary_distances(cube_mesh(3, 1., .1), cube, 0.05, size);
   EXPECT_NEAR(shifted.hausdorff, .1, 1e-12);
   // at x = 1.1 on the mesh (size 0.225) and x = 1 on the surface (0.25): the mesh's side counts
   EXPECT_NEAR(shifted.over_size, .1 / .225, 1e-12);
+  EXPECT_FALSE(shifted.worst_on_surface);
+  EXPECT_NEAR(shifted.worst_sample.x(), 1.1, 1e-12);
+  // the mesh shifted the other way: the surface's face x = 1 (size 0.25) is 0.1 from the mesh,
+  // the mesh's face x = -0.1 (size 0.525) 0.1 from the surface
+  const Boundary_distances_3<Point> back = boundary_distances(cube_mesh(3, 1., -.1), cube, 0.05, size);
+  EXPECT_NEAR(back.over_size, .1 / .25, 1e-12);
+  EXPECT_TRUE(back.worst_on_surface);
+  EXPECT_NEAR(back.worst_sample.x(), 1., 1e-12);
   EXPECT_LT(boundary_distances(cube_mesh(3), cube, 0.05, size).over_size, 1e-12);
   // on one thread or two, the same
-  const Boundary_distances_3 one = boundary_distances(cube_mesh(3, 1., .1), cube, 0.05, size, CGAL::parameters::number_of_threads(1));
+  const Boundary_distances_3<Point> one = boundary_distances(cube_mesh(3, 1., .1), cube, 0.05, size, CGAL::parameters::number_of_threads(1));
   EXPECT_EQ(one.hausdorff, shifted.hausdorff);
   EXPECT_EQ(one.over_size, shifted.over_size);
   EXPECT_THROW(boundary_distances(cube_mesh(3), cube, 0.05, size, CGAL::parameters::number_of_threads(0)), std::invalid_argument);

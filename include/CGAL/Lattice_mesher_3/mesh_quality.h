@@ -464,10 +464,15 @@ Mesh_quality_3 compute_mesh_quality(const Tetrahedral_mesh_3<Point_3>& mesh, con
 Distances between the boundary of a mesh and the surface of its domain
 (`boundary_distances()`).
 */
+template <typename Point_3>
 struct Boundary_distances_3
 {
   double hausdorff = 0.;       ///< the symmetric Hausdorff distance
   double over_size = 0.;       ///< the largest of the same distances, each over the size at its sample
+  Point_3 worst_sample;        ///< the sample of `over_size`
+  /// whether `worst_sample` is a sample of the surface, far from the mesh (a part of the domain
+  /// that the mesh lacks), or of the mesh's boundary, far from the surface
+  bool worst_on_surface = false;
 };
 
 /*!
@@ -480,7 +485,8 @@ for, on `number_of_threads` OpenMP threads (a named parameter, as for
   points at most `spacing` apart on every boundary triangle, and
 - the distance to the boundary triangles of the points of `domain.sample_surface(spacing)`;
 each divided, for `Boundary_distances_3::over_size`, by `size` at the sample (the local edge
-length: a graded mesh is held to its own size, a thin part to the size it was given).
+length: a graded mesh is held to its own size, a thin part to the size it was given), whose
+largest names its sample (`Boundary_distances_3::worst_sample`).
 
 \tparam Domain a model of `LatticeMeshDomain_3` whose points are of type `Point_3`
 \tparam Size a callable `double(const Point_3&)`, positive, thread-safe
@@ -488,7 +494,7 @@ length: a graded mesh is held to its own size, a thin part to the size it was gi
 */
 template <typename Point_3, typename Domain, typename Size,
           typename NamedParameters = parameters::Default_named_parameters>
-Boundary_distances_3 boundary_distances(const Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain, double spacing,
+Boundary_distances_3<Point_3> boundary_distances(const Tetrahedral_mesh_3<Point_3>& mesh, const Domain& domain, double spacing,
                                         const Size& size, const NamedParameters& np = parameters::default_values())
 {
   // The boundary triangles in double arithmetic: the surface samples often lie in the plane of a
@@ -529,7 +535,8 @@ Boundary_distances_3 boundary_distances(const Tetrahedral_mesh_3<Point_3>& mesh,
   for(const std::array<int, 3>& f : mesh.boundary_faces)
     internal::sample_triangle_inside(std::array<Point_3, 3>{ mesh.points[std::size_t(f[0])], mesh.points[std::size_t(f[1])], mesh.points[std::size_t(f[2])] },
                                      spacing, std::back_inserter(points));
-  std::vector<Boundary_distances_3> mesh_to_surface(points.size());
+  // (distance, distance over the size) at each sample
+  std::vector<std::array<double, 2> > mesh_to_surface(points.size());
   internal::parallel_for_rethrow(points.size(), [&](std::size_t i) {
     const double d = std::sqrt(CGAL::to_double(domain.project_on_surface(points[i]).squared_distance));
     mesh_to_surface[i] = { d, d / size(points[i]) };
@@ -541,18 +548,24 @@ Boundary_distances_3 boundary_distances(const Tetrahedral_mesh_3<Point_3>& mesh,
   Tree tree(triangles.cbegin(), triangles.cend());
   tree.build();
   tree.accelerate_distance_queries();
-  std::vector<Boundary_distances_3> surface_to_mesh(samples.size());
+  std::vector<std::array<double, 2> > surface_to_mesh(samples.size());
   internal::parallel_for_rethrow(samples.size(), [&](std::size_t s) {
     const double d = std::sqrt(tree.squared_distance(to_double(samples[s])));
     surface_to_mesh[s] = { d, d / size(samples[s]) };
   }, threads);
 
-  Boundary_distances_3 result;
-  for(const std::vector<Boundary_distances_3>* part : { &mesh_to_surface, &surface_to_mesh })
-    for(const Boundary_distances_3& d : *part) {
-      result.hausdorff = (std::max)(result.hausdorff, d.hausdorff);
-      result.over_size = (std::max)(result.over_size, d.over_size);
+  Boundary_distances_3<Point_3> result;
+  result.worst_sample = points.front();
+  for(int side = 0; side < 2; ++side) {
+    const std::vector<std::array<double, 2> >& d = side ? surface_to_mesh : mesh_to_surface;
+    for(std::size_t i = 0; i < d.size(); ++i) {
+      result.hausdorff = (std::max)(result.hausdorff, d[i][0]);
+      if(!(d[i][1] > result.over_size)) continue;
+      result.over_size = d[i][1];
+      result.worst_sample = side ? samples[i] : points[i];
+      result.worst_on_surface = side == 1;
     }
+  }
   return result;
 }
 
