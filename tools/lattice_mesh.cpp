@@ -390,9 +390,9 @@ static Field shape_sized_field(const Domain& domain, const Field& field, LM::int
   return Field([sized](const Point_3& x) { return sized.frame(x); });
 }
 
-// A boundary farther than 1.5 times the local size from the surface (the sweep's limit) is a
-// part lost or a bulge, which the quality table alone would leave unnoticed: where, and why when
-// the size there is the smallest that the sizing may give (a part thinner than that).
+// A boundary farther than 1.5 times the local size from the surface (the limit of the manual's
+// sweep) is a part lost or a bulge, which the quality table alone would leave unnoticed: where,
+// and why when a part is lost where the size is the smallest the sizing gives (it is thinner).
 static void warn_if_part_lost(const LM::Boundary_distances_3<Point_3>& d, double size, double edge_length, const Options& o)
 {
   if(!(d.over_size > 1.5)) return;
@@ -404,7 +404,7 @@ static void warn_if_part_lost(const LM::Boundary_distances_3<Point_3>& d, double
     std::fprintf(stderr, "lattice-mesh: warning: the mesh's boundary at (%.6g, %.6g, %.6g) is %.4g from the surface, %.3g times "
                  "the size there (%.4g)", w.x(), w.y(), w.z(), d.over_size * size, d.over_size, size);
   const double smallest = o.min_edge_length > 0. ? o.min_edge_length : .25 * edge_length;
-  if(o.cells_across > 0. && size <= 1.001 * smallest)
+  if(d.worst_on_surface && o.cells_across > 0. && size <= 1.001 * smallest)
     std::fprintf(stderr, ", the smallest size: a part thinner than that is lost there; a smaller --min-edge-length (default "
                  "l*/4), with more vertices, keeps it");
   std::fprintf(stderr, "\n");
