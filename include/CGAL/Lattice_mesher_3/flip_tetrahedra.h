@@ -441,11 +441,16 @@ public:
     for(std::size_t t = 0; t < tets_.size(); ++t)
       if(alive_[t]) mesh_.tets.push_back(tets_[t]);
     if(!boundary_changed_) return;
+    // 2-2 flips keep the boundary's vertices: only faces of three of them are looked up (of
+    // any three, for a mesh given without its boundary faces)
+    std::vector<char> on_boundary(mesh_.points.size(), char(mesh_.boundary_faces.empty()));
+    for(const std::array<int, 3>& f : mesh_.boundary_faces) for(int v : f) on_boundary[std::size_t(v)] = 1;
     mesh_.boundary_faces.clear();
     for(std::size_t t = 0; t < tets_.size(); ++t) {
       if(!alive_[t]) continue;
       for(int i = 0; i < 4; ++i) {
         std::array<int, 3> face{ tets_[t][(i + 1) % 4], tets_[t][(i + 2) % 4], tets_[t][(i + 3) % 4] };
+        if(!on_boundary[std::size_t(face[0])] || !on_boundary[std::size_t(face[1])] || !on_boundary[std::size_t(face[2])]) continue;
         if(tets_around(face[0], face[1], face[2]).size() != 1) continue;
         // outward: the tetrahedron's own fourth vertex on the negative side
         if(orientation(face[0], face[1], face[2], tets_[t][i]) != CGAL::NEGATIVE) std::swap(face[0], face[1]);
