@@ -367,11 +367,10 @@ private:
 // The field scaled by the size that follows the shape, and p's edge length (the largest edge).
 template <typename Domain>
 static Field shape_sized_field(const Domain& domain, const Field& field, LM::internal::Lattice_mesher_parameters& p, const Options& o,
-                               LM::Stage_times_visitor& times)
+                               LM::Stage_times_visitor& times, LM::internal::Shape_sizing_report& report)
 {
   const auto start = std::chrono::steady_clock::now();
   const LM::internal::Shape_sizing_parameters s = shape_sizing(o);
-  LM::internal::Shape_sizing_report report;
   // the user's sizes: the envelope of the file's samples
   std::function<double(const Point_3&)> user = LM::internal::Unbounded_size();
   if(!o.size_field.empty()) {
@@ -393,7 +392,7 @@ static Field shape_sized_field(const Domain& domain, const Field& field, LM::int
 // A boundary farther than 1.5 times the local size from the surface (the limit of the manual's
 // sweep) is a part lost or a bulge, which the quality table alone would leave unnoticed: where,
 // and why when a part is lost where the size is the smallest the sizing gives (it is thinner).
-static void warn_if_part_lost(const LM::Boundary_distances_3<Point_3>& d, double size, double edge_length, const Options& o)
+static void warn_if_part_lost(const LM::Boundary_distances_3<Point_3>& d, double size, double floor)
 {
   if(!(d.over_size > 1.5)) return;
   const Point_3& w = d.worst_sample;
@@ -403,8 +402,7 @@ static void warn_if_part_lost(const LM::Boundary_distances_3<Point_3>& d, double
   else
     std::fprintf(stderr, "lattice-mesh: warning: the mesh's boundary at (%.6g, %.6g, %.6g) is %.4g from the surface, %.3g times "
                  "the size there (%.4g)", w.x(), w.y(), w.z(), d.over_size * size, d.over_size, size);
-  const double smallest = o.min_edge_length > 0. ? o.min_edge_length : .25 * edge_length;
-  if(d.worst_on_surface && o.cells_across > 0. && size <= 1.001 * smallest)
+  if(d.worst_on_surface && size <= 1.001 * floor)
     std::fprintf(stderr, ", the smallest size: a part thinner than that is lost there; a smaller --min-edge-length (default "
                  "l*/4), with more vertices, keeps it");
   std::fprintf(stderr, "\n");
@@ -439,14 +437,17 @@ static int run(const Domain& domain, const Field_choice& given, const Options& o
   p.edge_length = o.edge_length;
   p.number_of_vertices = o.vertices;
   // one run for a count (0: the edge length given), and the runs' seconds
-  struct Meshed { LM::Tetrahedral_mesh_3<Point_3> mesh; Field field; double edge_length; LM::Lattice_3 lattice; };
+  // floor: the smallest size where the size follows the thickness (0: it does not), below
+  // which thinner parts are lost
+  struct Meshed { LM::Tetrahedral_mesh_3<Point_3> mesh; Field field; double edge_length; LM::Lattice_3 lattice; double floor; };
   double optimize_seconds = 0., mesh_seconds = 0.;
   auto mesh_for = [&](double count) {
     LM::internal::Lattice_mesher_parameters q = p;
     q.number_of_vertices = count;
     if(!o.quiet && count != p.number_of_vertices)
       std::printf("lattice-mesh: the mesh is more than 15%% off %.0f vertices: meshing again for about %.0f\n", p.number_of_vertices, count);
-    const Field field = shape_sized_field(domain, choice.field, q, o, times);
+    LM::internal::Shape_sizing_report sizing;
+    const Field field = shape_sized_field(domain, choice.field, q, o, times, sizing);
     Mesher mesher(domain, field, q);
     if(!o.quiet)
       std::printf("lattice-mesh: %s lattice, l* = %.6g, about %.0f vertices expected, %d coarse level(s), %d thread(s)\n",
@@ -455,7 +456,8 @@ static int run(const Domain& domain, const Field_choice& given, const Options& o
     Progress progress(o, mesher.coarse_levels(), times);
     mesher.optimize(progress);
     const auto t1 = std::chrono::steady_clock::now();
-    Meshed result{ mesher.tetrahedralize(progress), field, mesher.edge_length(), mesher.lattice() };
+    Meshed result{ mesher.tetrahedralize(progress), field, mesher.edge_length(), mesher.lattice(),
+                   sizing.cells_across > 0. ? sizing.floor : 0. };
     optimize_seconds += std::chrono::duration<double>(t1 - t0).count();
     mesh_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
     return result;
@@ -474,7 +476,7 @@ static int run(const Domain& domain, const Field_choice& given, const Options& o
   const LM::Boundary_distances_3<Point_3> distances = LM::boundary_distances(mesh, domain, 0.25 * meshed.edge_length,
       local_size, CGAL::parameters::number_of_threads(o.threads));
   times.add("check and quality", std::chrono::duration<double>(std::chrono::steady_clock::now() - checked).count());
-  warn_if_part_lost(distances, local_size(distances.worst_sample), meshed.edge_length, o);
+  warn_if_part_lost(distances, local_size(distances.worst_sample), meshed.floor);
   q.hausdorff = distances.hausdorff;
   q.hausdorff_over_size = distances.over_size;
   q.edge_length = meshed.edge_length;

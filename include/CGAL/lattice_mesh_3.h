@@ -112,11 +112,13 @@ struct Shape_sizing_parameters
   }
 };
 
-// What the sizing did: the samples of the shape's size, the cells across and the smallest size.
+// What the sizing did: the samples of the shape's size, the cells across, the smallest size, and
+// the floor below which it shrinks no size (min_edge_length, l*/4 by default; 0 without a size
+// that follows the shape).
 struct Shape_sizing_report
 {
   std::size_t samples = 0;
-  double cells_across = 0., surface_tolerance = 0., smallest_size = 0.;
+  double cells_across = 0., surface_tolerance = 0., smallest_size = 0., floor = 0.;
 };
 
 // `field` scaled by the user's size and the size that follows the shape of `domain`, and
@@ -213,6 +215,7 @@ sized_field(const MeshDomain& domain, const FrameField& field, const UserSize& u
     report->cells_across = cells;
     report->surface_tolerance = tolerance;
     report->smallest_size = size.shape ? (std::max)(size.shape->min_size(), floor(l)) : l;
+    report->floor = size.shape ? floor(l) : 0.;
   }
   return sized(size, l);
 }
