@@ -311,6 +311,50 @@ TEST(Tetrahedralize_particles, FillsTheGapsOfTheSurfaceParticles)
   EXPECT_EQ(LM::internal::tetrahedralize_particles(ps, sphere, field, o, Traits()).tets, pitted.tets);
 }
 
+// Two boxes of a jittered grid's Delaunay cells that meet at one vertex: the boundary of the
+// cells kept is pinched there. The repair leaves it manifold and puts back every cell it took
+// whose return would not pinch it again, so that no cell is lost without need (a cell with an
+// interior particle taken for nothing left that particle on the boundary, a pit).
+TEST(Tetrahedralize_particles, RepairTakesOnlyTheCellsThatPinchTheBoundary)
+{
+  typedef CGAL::Triangulation_vertex_base_with_info_3<int, K> Vb;
+  typedef CGAL::Triangulation_cell_base_with_info_3<char, K> Cb;
+  typedef CGAL::Delaunay_triangulation_3<K, CGAL::Triangulation_data_structure_3<Vb, Cb> > Dt;
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> jitter(-.05, .05);
+  std::vector<std::pair<Point_3, int> > points;
+  for(int i = 0; i < 4; ++i) for(int j = 0; j < 4; ++j) for(int k = 0; k < 4; ++k)
+    points.emplace_back(Point_3(i + jitter(random), j + jitter(random), k + jitter(random)), int(points.size()));
+  Dt dt(points.begin(), points.end());
+  auto in_box = [](const Point_3& p, double lo) { return lo < p.x() && p.x() < lo + 1.5 && lo < p.y() && p.y() < lo + 1.5 && lo < p.z() && p.z() < lo + 1.5; };
+  std::size_t kept = 0;
+  for(auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
+    const Point_3 g = dt.is_infinite(c) ? Point_3(-1, -1, -1)
+                                        : CGAL::centroid(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
+    c->info() = in_box(g, 0.) || in_box(g, 1.5);
+    kept += std::size_t(c->info());
+  }
+  ASSERT_FALSE(LM::internal::cells_around_non_manifold(dt, 1).empty());
+  std::set<Dt::Cell_handle> wedges;
+  LM::internal::make_boundary_manifold(dt, wedges, [](Dt::Cell_handle c) {
+    std::array<int, 4> ids{ c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info() };
+    std::sort(ids.begin(), ids.end());
+    return ids;
+  }, [](Dt::Cell_handle, int) { return true; }, 1);
+  EXPECT_TRUE(LM::internal::cells_around_non_manifold(dt, 1).empty());
+  std::size_t left = 0, could_return = 0;
+  for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
+    left += std::size_t(c->info());
+    const Point_3 g = CGAL::centroid(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
+    if(c->info() || !(in_box(g, 0.) || in_box(g, 1.5))) continue;
+    c->info() = 1;
+    could_return += std::size_t(LM::internal::manifold_around(dt, Dt::Cell_handle(c)));
+    c->info() = 0;
+  }
+  EXPECT_LT(left, kept);
+  EXPECT_EQ(could_return, 0u);
+}
+
 // The boundary faces as triples of points (contractions renumber the vertices).
 std::set<std::array<Point_3, 3> > boundary_triangles(const LM::Tetrahedral_mesh_3<Point_3>& mesh)
 {
