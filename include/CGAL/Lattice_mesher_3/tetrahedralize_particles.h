@@ -325,18 +325,20 @@ Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& p
   for(std::size_t k = 0; k < cells.size(); ++k) if(wedge[k]) wedges.insert(cells[k]);
 
   // 2. A manifold boundary.
-  make_boundary_manifold(dt, wedges, [](Cell_handle c) {
+  auto particles_of = [](Cell_handle c) {
     std::array<int, 4> ids{ c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info() };
     std::sort(ids.begin(), ids.end());
     return ids;
-  }, [&](Cell_handle c, int i) {   // the face's centroid and the midpoints of its edges
+  };
+  auto near_surface = [&](Cell_handle c, int i) {   // face i's centroid and the midpoints of its edges
     const Point_3 &p = P(c->vertex((i + 1) & 3)), &q = P(c->vertex((i + 2) & 3)), &r = P(c->vertex((i + 3) & 3));
     for(const Point_3& g : { CGAL::centroid(p, q, r), CGAL::midpoint(p, q), CGAL::midpoint(q, r), CGAL::midpoint(r, p) }) {
       const Mat3 b = isotropic_map(field.frame(g), g);
       if(!((b * (to_eigen(g) - to_eigen(domain.project_on_surface(g).point))).norm() <= o.pit_depth * o.edge_length)) return false;
     }
     return true;
-  }, o.threads);
+  };
+  make_boundary_manifold(dt, wedges, particles_of, near_surface, o.threads);
 
   // 3. Output, with the particles that are used renumbered.
   Tetrahedral_mesh_3<Point_3> mesh;
