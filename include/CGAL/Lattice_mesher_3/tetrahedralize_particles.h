@@ -29,6 +29,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -123,6 +124,13 @@ bool manifold_vertex(Vertex_handle v, const std::vector<Cell_handle>& star)
   return true;
 }
 
+// The distance from g to the domain's surface in the isotropic space of b.
+template <typename Domain, typename Point_3>
+double isotropic_surface_distance(const Domain& domain, const Mat3& b, const Point_3& g)
+{
+  return (b * (to_eigen(g) - to_eigen(domain.project_on_surface(g).point))).norm();
+}
+
 // Whether the edge e is in at most two boundary faces: around it, the kept cells (info 1) and
 // the others form at most one run each. `ring` receives the cells around e.
 template <typename Dt>
@@ -212,10 +220,10 @@ bool manifold_around(const Dt& dt, typename Dt::Cell_handle c)
 // and those that held an interior particle left it on the boundary, a pit one cell deep (bunny,
 // FCC in its cross field, 60,000 vertices: 12 such particles, the deepest 0.020 from the surface,
 // the mesh's Hausdorff distance); a cell across a gap of the domain, whose centroid only is
-// inside, stays out (rotor at 3,000 vertices: faces across the rotor, 1.8 l* off). `id` orders the cells.
-template <typename Dt, typename CellId, typename NearSurface>
-void make_boundary_manifold(Dt& dt, std::set<typename Dt::Cell_handle>& wedges, const CellId& id,
-                            const NearSurface& near_surface, int threads)
+// inside, stays out (rotor at 3,000 vertices: faces across the rotor, 1.8 l* off). The cells go
+// back in the order of their vertices' infos (the particles), not of their addresses.
+template <typename Dt, typename NearSurface>
+void make_boundary_manifold(Dt& dt, std::set<typename Dt::Cell_handle>& wedges, const NearSurface& near_surface, int threads)
 {
   typedef typename Dt::Cell_handle Cell_handle;
   auto is_boundary_facet = [](Cell_handle c, int i) { return c->info() != c->neighbor(i)->info(); };
@@ -242,17 +250,21 @@ void make_boundary_manifold(Dt& dt, std::set<typename Dt::Cell_handle>& wedges, 
     removed.insert(removed.end(), touching.begin(), touching.end());
     ++pass;
   }
-  std::sort(removed.begin(), removed.end(), [&](Cell_handle a, Cell_handle b) { return id(a) < id(b); });
-  removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
+  auto particles = [](Cell_handle c) {
+    std::array<std::decay_t<decltype(c->vertex(0)->info())>, 4> ids{ c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info() };
+    std::sort(ids.begin(), ids.end());
+    return ids;
+  };
+  std::sort(removed.begin(), removed.end(), [&](Cell_handle a, Cell_handle b) { return particles(a) < particles(b); });
   for(bool changed = true; changed;) {   // a cell put back may let another one back
     changed = false;
     for(Cell_handle c : removed) {
-      bool near = !c->info();
-      for(int i = 0; i < 4 && near; ++i) near = c->neighbor(i)->info() || near_surface(c, i);
-      if(!near) continue;
-      c->info() = 1;
-      if(manifold_around(dt, c)) changed = true;
-      else c->info() = 0;
+      if(c->info()) continue;
+      c->info() = 1;   // the combinatorial test first: the surface test projects
+      bool back = manifold_around(dt, c);
+      for(int i = 0; i < 4 && back; ++i) back = c->neighbor(i)->info() || near_surface(c, i);
+      c->info() = back;
+      changed = changed || back;
     }
   }
 }
@@ -308,7 +320,7 @@ Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& p
       double mean_edge = 0.;
       for(int i = 0; i < 4; ++i) for(int j = i + 1; j < 4; ++j) mean_edge += (q[i] - q[j]).norm();
       mean_edge /= 6.;
-      if((b * (to_eigen(g) - to_eigen(domain.project_on_surface(g).point))).norm() < o.flat_cell_ratio * mean_edge) {
+      if(isotropic_surface_distance(domain, b, g) < o.flat_cell_ratio * mean_edge) {
         wedge[k] = on_curves >= 2 && smallest_dihedral_angle(q[0], q[1], q[2], q[3]) >= o.wedge_angle;
         if(!wedge[k]) inside = 0;
       }
@@ -325,20 +337,13 @@ Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& p
   for(std::size_t k = 0; k < cells.size(); ++k) if(wedge[k]) wedges.insert(cells[k]);
 
   // 2. A manifold boundary.
-  auto particles_of = [](Cell_handle c) {
-    std::array<int, 4> ids{ c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info() };
-    std::sort(ids.begin(), ids.end());
-    return ids;
-  };
   auto near_surface = [&](Cell_handle c, int i) {   // face i's centroid and the midpoints of its edges
     const Point_3 &p = P(c->vertex((i + 1) & 3)), &q = P(c->vertex((i + 2) & 3)), &r = P(c->vertex((i + 3) & 3));
-    for(const Point_3& g : { CGAL::centroid(p, q, r), CGAL::midpoint(p, q), CGAL::midpoint(q, r), CGAL::midpoint(r, p) }) {
-      const Mat3 b = isotropic_map(field.frame(g), g);
-      if(!((b * (to_eigen(g) - to_eigen(domain.project_on_surface(g).point))).norm() <= o.pit_depth * o.edge_length)) return false;
-    }
+    for(const Point_3& g : { CGAL::centroid(p, q, r), CGAL::midpoint(p, q), CGAL::midpoint(q, r), CGAL::midpoint(r, p) })
+      if(!(isotropic_surface_distance(domain, isotropic_map(field.frame(g), g), g) <= o.pit_depth * o.edge_length)) return false;
     return true;
   };
-  make_boundary_manifold(dt, wedges, particles_of, near_surface, o.threads);
+  make_boundary_manifold(dt, wedges, near_surface, o.threads);
 
   // 3. Output, with the particles that are used renumbered.
   Tetrahedral_mesh_3<Point_3> mesh;
