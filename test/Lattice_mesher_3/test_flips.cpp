@@ -336,7 +336,7 @@ TEST(Tetrahedralize_particles, RepairTakesOnlyTheCellsThatPinchTheBoundary)
   }
   ASSERT_FALSE(LM::internal::cells_around_non_manifold(dt, 1).empty());
   std::set<Dt::Cell_handle> wedges;
-  LM::internal::make_boundary_manifold(dt, wedges, [](Dt::Cell_handle, int) { return true; }, 1);
+  LM::internal::make_boundary_manifold(dt, wedges, [](Dt::Cell_handle) { return true; }, 1);
   EXPECT_TRUE(LM::internal::cells_around_non_manifold(dt, 1).empty());
   std::size_t left = 0, could_return = 0;
   for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
@@ -349,6 +349,52 @@ TEST(Tetrahedralize_particles, RepairTakesOnlyTheCellsThatPinchTheBoundary)
   }
   EXPECT_LT(left, kept);
   EXPECT_EQ(could_return, 0u);
+}
+
+// Single cells under the north pole of the unit sphere (l* = 0.2) that the manifold repair
+// might put back, alone in the mesh: a regular one with a face on the sphere goes back, its other
+// faces being to an interior particle; the same with that particle on the surface does not (its
+// faces are l* / 3 deep), nor does a sliver whose faces all hug the sphere. Each is refused by
+// its own test only: with a larger depth or no smallest angle it would go back.
+TEST(Tetrahedralize_particles, PutsBackNoSliverAndNoFaceOffTheSurface)
+{
+  typedef CGAL::Triangulation_vertex_base_with_info_3<int, K> Vb;
+  typedef CGAL::Triangulation_cell_base_with_info_3<char, K> Cb;
+  typedef CGAL::Delaunay_triangulation_3<K, CGAL::Triangulation_data_structure_3<Vb, Cb> > Dt;
+  const LM::Constant_frame_field_3<Traits> field;
+  const auto sphere = LM::make_sphere_domain_3<K>(CGAL::ORIGIN, 1.);
+  const double l = .2;
+  auto may_put_back = [&](const LM::Particle_set_3<Point_3>& ps, const LM::internal::Tetrahedralization_options& o) {
+    std::vector<std::pair<Point_3, int> > points;
+    for(std::size_t i = 0; i < ps.size(); ++i) points.emplace_back(ps.points[i], int(i));
+    Dt dt(points.begin(), points.end());
+    EXPECT_EQ(dt.number_of_finite_cells(), 1u);
+    for(auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) c->info() = !dt.is_infinite(c);
+    return LM::internal::may_put_back(Dt::Cell_handle(dt.finite_cells_begin()), ps, sphere, field, o);
+  };
+  LM::internal::Tetrahedralization_options o;
+  o.edge_length = l;
+  const double r = l / std::sqrt(3.), z = std::sqrt(1. - r * r);
+  LM::Particle_set_3<Point_3> regular, deep, sliver;
+  for(int k = 0; k < 3; ++k) {
+    const Point_3 p(r * std::cos(2. * CGAL_PI * k / 3.), r * std::sin(2. * CGAL_PI * k / 3.), z);
+    regular.push_back(p, LM::Particle_kind::BOUNDARY);
+    deep.push_back(p, LM::Particle_kind::BOUNDARY);
+  }
+  regular.push_back(Point_3(0., 0., z - l * std::sqrt(2. / 3.)), LM::Particle_kind::FREE);
+  deep.push_back(regular.points.back(), LM::Particle_kind::BOUNDARY);
+  for(int k = 0; k < 4; ++k) {   // a square of side l on the sphere, one diagonal lowered by l / 10
+    const double x = (k & 1 ? .5 : -.5) * l, y = (k & 2 ? .5 : -.5) * l;
+    sliver.push_back(Point_3(x, y, std::sqrt(1. - x * x - y * y) - ((k == 1 || k == 2) ? .1 * l : 0.)), LM::Particle_kind::BOUNDARY);
+  }
+  EXPECT_TRUE(may_put_back(regular, o));
+  EXPECT_FALSE(may_put_back(deep, o));
+  EXPECT_FALSE(may_put_back(sliver, o));
+  LM::internal::Tetrahedralization_options no_angle = o, no_depth = o;
+  no_angle.wedge_angle = 0.;
+  no_depth.pit_depth = 1.;
+  EXPECT_TRUE(may_put_back(sliver, no_angle));
+  EXPECT_TRUE(may_put_back(deep, no_depth));
 }
 
 // The boundary faces as triples of points (contractions renumber the vertices).

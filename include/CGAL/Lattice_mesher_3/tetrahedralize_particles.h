@@ -47,7 +47,8 @@ struct Tetrahedralization_options
   /// or corner particles) and its smallest dihedral angle (isotropic space, degrees) at least
   /// this. The wedge between an edge's two faces is no sliver, but under a stretch its centroid
   /// may lie as close to the surface (fig9 BCC: smallest angles 27-35 degrees, ratios 0.09-0.1):
-  /// dropped, it left the edge chamfered (Hausdorff 0.25 to the cube of side 10).
+  /// dropped, it left the edge chamfered (Hausdorff 0.25 to the cube of side 10). A cell that
+  /// the manifold repair puts back needs the same smallest angle.
   double wedge_angle = 20.;
   /// l*, which sets the neighbourhood (1.3 l*) of the isotropic embedding under a varying
   /// stretch and the depth of the pits filled; 0: estimated from the number of particles and
@@ -56,8 +57,8 @@ struct Tetrahedralization_options
   /// A boundary vertex that is an interior particle more than this times l* from the surface
   /// (isotropic space) sits in a pit, where the surface particles left a gap: a boundary particle
   /// at the nearest surface point fills it (0: none). The manifold repair puts back the cells it
-  /// did not need to remove where their faces on the boundary (centroids and edge midpoints) lie
-  /// within this times l* of the surface.
+  /// did not need to remove where their boundary faces between surface particles (centroids and
+  /// edge midpoints) lie within this times l* of the surface.
   double pit_depth = 0.25;
   int threads = 1;
 };
@@ -215,15 +216,14 @@ bool manifold_around(const Dt& dt, typename Dt::Cell_handle c)
 // nothing changes: each pass removes cells, so it ends, but where the domain is thin one removal
 // may expose the next (cheese and rotor at 3,000 vertices: more than 20 passes), hence the
 // generous bound. Then the removed cells go back, one at a time, wherever the boundary stays
-// manifold around them and the faces they put on it are near the surface (`near_surface(c, i)`
-// for face i of c): of all the cells around a non-manifold place, most were not needed to go,
-// and those that held an interior particle left it on the boundary, a pit one cell deep (bunny,
-// FCC in its cross field, 60,000 vertices: 12 such particles, the deepest 0.020 from the surface,
-// the mesh's Hausdorff distance); a cell across a gap of the domain, whose centroid only is
-// inside, stays out (rotor at 3,000 vertices: faces across the rotor, 1.8 l* off). The cells go
-// back in the order of their vertices' infos (the particles), not of their addresses.
-template <typename Dt, typename NearSurface>
-void make_boundary_manifold(Dt& dt, std::set<typename Dt::Cell_handle>& wedges, const NearSurface& near_surface, int threads)
+// manifold around them and `may_return(c)` accepts the cell (kept while it is asked): of all the
+// cells around a non-manifold place, most were not needed to go, and those that held an interior
+// particle left it on the boundary, a pit one cell deep (bunny, FCC in its cross field, 60,000
+// vertices: 12 such particles, the deepest 0.020 from the surface, the mesh's Hausdorff
+// distance). The cells go back in the order of their vertices' infos (the particles), not of
+// their addresses.
+template <typename Dt, typename MayReturn>
+void make_boundary_manifold(Dt& dt, std::set<typename Dt::Cell_handle>& wedges, const MayReturn& may_return, int threads)
 {
   typedef typename Dt::Cell_handle Cell_handle;
   auto is_boundary_facet = [](Cell_handle c, int i) { return c->info() != c->neighbor(i)->info(); };
@@ -260,13 +260,44 @@ void make_boundary_manifold(Dt& dt, std::set<typename Dt::Cell_handle>& wedges, 
     changed = false;
     for(Cell_handle c : removed) {
       if(c->info()) continue;
-      c->info() = 1;   // the combinatorial test first: the surface test projects
-      bool back = manifold_around(dt, c);
-      for(int i = 0; i < 4 && back; ++i) back = c->neighbor(i)->info() || near_surface(c, i);
+      c->info() = 1;   // the combinatorial test first: the caller's test projects
+      const bool back = manifold_around(dt, c) && may_return(c);
       c->info() = back;
       changed = changed || back;
     }
   }
+}
+
+// Whether a cell that the manifold repair removed may go back (its neighbours' infos tell which
+// are kept): it must be no sliver (smallest dihedral angle in the isotropic space at least
+// `wedge_angle`) and the faces it puts on the boundary between three surface particles must lie
+// within `pit_depth` l* of the surface, at their centroids and edge midpoints. Without the face
+// test a cell whose centroid only is inside bridges a gap of the domain (rotor at 3,000
+// vertices: faces across it 1.8 l* off the surface); a face to an interior particle is exempt,
+// since that particle is on the boundary already and the cells around it go back one at a time
+// (a pit of several cells stayed open: bunny, FCC in its cross field, Hausdorff 0.0166 against
+// 0.0103); without the angle test, such a cell may be a sliver (man at 3,000 vertices: 0.55
+// degrees).
+template <typename Cell_handle, typename Point_3, typename Domain, typename FrameField>
+bool may_put_back(Cell_handle c, const Particle_set_3<Point_3>& ps, const Domain& domain, const FrameField& field,
+                  const Tetrahedralization_options& o)
+{
+  auto P = [&](int i) -> const Point_3& { return ps.points[std::size_t(c->vertex(i)->info())]; };
+  const Point_3 g = CGAL::centroid(P(0), P(1), P(2), P(3));
+  const Mat3 b = isotropic_map(field.frame(g), g);
+  std::array<Vec3, 4> q;
+  for(int i = 0; i < 4; ++i) q[i] = b * to_eigen(P(i));
+  if(!(smallest_dihedral_angle(q[0], q[1], q[2], q[3]) >= o.wedge_angle)) return false;
+  for(int i = 0; i < 4; ++i) {
+    if(c->neighbor(i)->info()) continue;
+    bool on_surface = true;
+    for(int k = 1; k < 4; ++k) on_surface = on_surface && ps.kinds[std::size_t(c->vertex((i + k) & 3)->info())] != Particle_kind::FREE;
+    if(!on_surface) continue;
+    const Point_3 &u = P((i + 1) & 3), &v = P((i + 2) & 3), &w = P((i + 3) & 3);
+    for(const Point_3& m : { CGAL::centroid(u, v, w), CGAL::midpoint(u, v), CGAL::midpoint(v, w), CGAL::midpoint(w, u) })
+      if(!(isotropic_surface_distance(domain, isotropic_map(field.frame(m), m), m) <= o.pit_depth * o.edge_length)) return false;
+  }
+  return true;
 }
 
 // The Delaunay tetrahedralization of the particles placed at y, restricted to the domain and
@@ -337,13 +368,7 @@ Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& p
   for(std::size_t k = 0; k < cells.size(); ++k) if(wedge[k]) wedges.insert(cells[k]);
 
   // 2. A manifold boundary.
-  auto near_surface = [&](Cell_handle c, int i) {   // face i's centroid and the midpoints of its edges
-    const Point_3 &p = P(c->vertex((i + 1) & 3)), &q = P(c->vertex((i + 2) & 3)), &r = P(c->vertex((i + 3) & 3));
-    for(const Point_3& g : { CGAL::centroid(p, q, r), CGAL::midpoint(p, q), CGAL::midpoint(q, r), CGAL::midpoint(r, p) })
-      if(!(isotropic_surface_distance(domain, isotropic_map(field.frame(g), g), g) <= o.pit_depth * o.edge_length)) return false;
-    return true;
-  };
-  make_boundary_manifold(dt, wedges, near_surface, o.threads);
+  make_boundary_manifold(dt, wedges, [&](Cell_handle c) { return may_put_back(c, ps, domain, field, o); }, o.threads);
 
   // 3. Output, with the particles that are used renumbered.
   Tetrahedral_mesh_3<Point_3> mesh;
@@ -525,9 +550,9 @@ vertices are boundary particles and whose centroid lies within `flatness_ratio` 
 edge length of the boundary are dropped (they would be slivers lying on the surface), but for
 the wedges along sharp edges (`wedge_angle`). The boundary is then repaired into a closed
 2-manifold: cells are removed around non-manifold edges and vertices until none remains, the
-kept wedges first; then each removed cell goes back if the boundary stays manifold around it and
-its faces on the boundary (their centroids and edge midpoints) lie within l* / 4 of the surface
-(isotropic space). A boundary vertex that is an interior particle more than l* / 4 from the
+kept wedges first; then each removed cell goes back if the boundary stays manifold around it,
+its smallest dihedral angle is at least `wedge_angle` and its boundary faces between three surface
+particles (their centroids and edge midpoints) lie within l* / 4 of the surface (isotropic space). A boundary vertex that is an interior particle more than l* / 4 from the
 surface (isotropic space) sits in a pit, where the surface particles left a gap: a boundary
 particle is added at the surface point nearest to it (unless one lies within l* / 2 of that
 point) and the particles are connected again. Particles that end up in no tetrahedron are not
@@ -555,7 +580,7 @@ already conforms to the boundary; CGAL's triangulation is exact and robust on de
     \cgalParamDefault{0.1}
   \cgalParamNEnd
   \cgalParamNBegin{wedge_angle}
-    \cgalParamDescription{... unless it is a wedge along a sharp edge: two of its vertices on feature curves and its smallest dihedral angle (isotropic space, degrees) at least this}
+    \cgalParamDescription{... unless it is a wedge along a sharp edge: two of its vertices on feature curves and its smallest dihedral angle (isotropic space, degrees) at least this; a cell that the manifold repair removed goes back only with this smallest angle}
     \cgalParamType{double}
     \cgalParamDefault{20}
   \cgalParamNEnd
