@@ -351,6 +351,47 @@ TEST(Tetrahedralize_particles, RepairTakesOnlyTheCellsThatPinchTheBoundary)
   EXPECT_EQ(could_return, 0u);
 }
 
+// A jittered 5 x 5 x 5 grid's Delaunay cells, all kept but those around its centre particle, of
+// which one stays: a cavity, whose boundary the centre is on. close_pits() puts the others back all at once
+// where the callback accepts them, none where it refuses one, and none where another particle of
+// theirs is interior too (their faces to it would go on the boundary untested).
+TEST(Tetrahedralize_particles, ClosesAPitAtAnInteriorParticle)
+{
+  typedef CGAL::Triangulation_vertex_base_with_info_3<int, K> Vb;
+  typedef CGAL::Triangulation_cell_base_with_info_3<char, K> Cb;
+  typedef CGAL::Delaunay_triangulation_3<K, CGAL::Triangulation_data_structure_3<Vb, Cb> > Dt;
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> jitter(-.05, .05);
+  std::vector<std::pair<Point_3, int> > points;
+  for(int i = 0; i < 5; ++i) for(int j = 0; j < 5; ++j) for(int k = 0; k < 5; ++k)
+    points.emplace_back(Point_3(i + jitter(random), j + jitter(random), k + jitter(random)), int(points.size()));
+  Dt dt(points.begin(), points.end());
+  const int centre = 62;   // (2, 2, 2)
+  std::size_t open = 0;
+  for(auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
+    c->info() = !dt.is_infinite(c);
+    bool at_centre = false;
+    for(int i = 0; i < 4; ++i) at_centre = at_centre || (!dt.is_infinite(c->vertex(i)) && c->vertex(i)->info() == centre);
+    if(at_centre && open++ > 0) c->info() = 0;
+  }
+  ASSERT_GT(open, 2u);
+  ASSERT_TRUE(LM::internal::cells_around_non_manifold(dt, 1).empty());
+  auto kept = [&] {
+    std::size_t n = 0;
+    for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) n += std::size_t(c->info());
+    return n;
+  };
+  const std::size_t pitted = kept();
+  ASSERT_EQ(pitted, dt.number_of_finite_cells() - open + 1);
+  auto accept = [](Dt::Cell_handle) { return true; };
+  LM::internal::close_pits(dt, [](Dt::Vertex_handle v) { return v->info() == centre; }, [](Dt::Cell_handle) { return false; });
+  EXPECT_EQ(kept(), pitted);
+  LM::internal::close_pits(dt, [](Dt::Vertex_handle v) { return v->info() == centre || v->info() == centre + 1; }, accept);
+  EXPECT_EQ(kept(), pitted);
+  LM::internal::close_pits(dt, [](Dt::Vertex_handle v) { return v->info() == centre; }, accept);
+  EXPECT_EQ(kept(), dt.number_of_finite_cells());
+}
+
 // Single cells under the north pole of the unit sphere (l* = 0.2) that the manifold repair
 // might put back, alone in the mesh: a regular one with a face on the sphere goes back, its other
 // faces being to an interior particle; the same with that particle on the surface does not (its

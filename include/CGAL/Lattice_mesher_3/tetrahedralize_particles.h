@@ -268,6 +268,45 @@ void make_boundary_manifold(Dt& dt, std::set<typename Dt::Cell_handle>& wedges, 
   }
 }
 
+// Closes the pits that interior particles still make in the boundary of the kept cells (info 1):
+// the cells around such a particle v that are not kept go in together, so that v becomes
+// interior, where v is their only interior particle (their faces opposite v, the new boundary,
+// are then all between surface particles), none is infinite, the boundary stays manifold around
+// each and `may_return(c)` accepts each. One cell at a time cannot fill such a pit where each
+// cell alone would pinch the boundary, nor where the cells' centroids lie outside a concave
+// surface. The particles are taken in the order of their infos.
+template <typename Dt, typename IsInterior, typename MayReturn>
+void close_pits(Dt& dt, const IsInterior& is_interior, const MayReturn& may_return)
+{
+  typedef typename Dt::Vertex_handle Vertex_handle;
+  typedef typename Dt::Cell_handle Cell_handle;
+  std::vector<Vertex_handle> interior;
+  for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+    if(is_interior(Vertex_handle(v))) interior.push_back(v);
+  std::sort(interior.begin(), interior.end(), [](Vertex_handle a, Vertex_handle b) { return a->info() < b->info(); });
+  std::vector<Cell_handle> star, open;
+  for(bool changed = true; changed;) {
+    changed = false;
+    for(Vertex_handle v : interior) {
+      star_of(v, star);
+      open.clear();
+      bool kept = false, closable = true;
+      for(Cell_handle c : star) {
+        if(c->info()) { kept = true; continue; }
+        open.push_back(c);
+        for(int i = 0; i < 4 && closable; ++i)
+          closable = !dt.is_infinite(c->vertex(i)) && (c->vertex(i) == v || !is_interior(c->vertex(i)));
+      }
+      if(!kept || open.empty() || !closable) continue;
+      for(Cell_handle c : open) c->info() = 1;
+      bool close = true;
+      for(std::size_t k = 0; k < open.size() && close; ++k) close = manifold_around(dt, open[k]) && may_return(open[k]);
+      if(!close) for(Cell_handle c : open) c->info() = 0;
+      changed = changed || close;
+    }
+  }
+}
+
 // Whether a cell that the manifold repair removed may go back (its neighbours' infos tell which
 // are kept): it must be no sliver (smallest dihedral angle in the isotropic space at least
 // `wedge_angle`) and the faces it puts on the boundary between three surface particles must lie
@@ -368,7 +407,9 @@ Tetrahedral_mesh_3<Point_3> restricted_delaunay(const Particle_set_3<Point_3>& p
   for(std::size_t k = 0; k < cells.size(); ++k) if(wedge[k]) wedges.insert(cells[k]);
 
   // 2. A manifold boundary.
-  make_boundary_manifold(dt, wedges, [&](Cell_handle c) { return may_put_back(c, ps, domain, field, o); }, o.threads);
+  auto may_return = [&](Cell_handle c) { return may_put_back(c, ps, domain, field, o); };
+  make_boundary_manifold(dt, wedges, may_return, o.threads);
+  close_pits(dt, [&](Vertex_handle v) { return !on_boundary(v); }, may_return);
 
   // 3. Output, with the particles that are used renumbered.
   Tetrahedral_mesh_3<Point_3> mesh;
@@ -552,11 +593,14 @@ the wedges along sharp edges (`wedge_angle`). The boundary is then repaired into
 2-manifold: cells are removed around non-manifold edges and vertices until none remains, the
 kept wedges first; then each removed cell goes back if the boundary stays manifold around it,
 its smallest dihedral angle is at least `wedge_angle` and its boundary faces between three surface
-particles (their centroids and edge midpoints) lie within l* / 4 of the surface (isotropic space). A boundary vertex that is an interior particle more than l* / 4 from the
-surface (isotropic space) sits in a pit, where the surface particles left a gap: a boundary
-particle is added at the surface point nearest to it (unless one lies within l* / 2 of that
-point) and the particles are connected again. Particles that end up in no tetrahedron are not
-output. The tetrahedra are positively oriented and `boundary_faces` are oriented outward.
+particles (their centroids and edge midpoints) lie within l* / 4 of the surface (isotropic space);
+where an interior particle is still on the boundary, the cells around it that are not kept go in
+together on the same terms if it is their only interior particle. A boundary vertex that is an
+interior particle more than l* / 4 from the surface (isotropic space) sits in a pit, where the
+surface particles left a gap: a boundary particle is added at the surface point nearest to it
+(unless one lies within l* / 2 of that point) and the particles are connected again. Particles
+that end up in no tetrahedron are not output. The tetrahedra are positively oriented and
+`boundary_faces` are oriented outward.
 
 The isotropic space is where the field's metric B^T B is Euclidean: the particles themselves
 under a cross field or a constant frame, and under a varying stretch the least-squares
