@@ -352,9 +352,9 @@ TEST(Tetrahedralize_particles, RepairTakesOnlyTheCellsThatPinchTheBoundary)
 }
 
 // A jittered 5 x 5 x 5 grid's Delaunay cells, all kept but those around its centre particle, of
-// which one stays: a cavity, whose boundary the centre is on. close_pits() puts the others back all at once
-// where the callback accepts them, none where it refuses one, and none where another particle of
-// theirs is interior too (their faces to it would go on the boundary untested).
+// which one stays: a cavity, whose boundary the centre is on. close_pits() puts the others back all
+// at once where the callback accepts them, none where it refuses one, and none where another
+// particle of theirs is interior too (their faces to it would go on the boundary untested).
 TEST(Tetrahedralize_particles, ClosesAPitAtAnInteriorParticle)
 {
   typedef CGAL::Triangulation_vertex_base_with_info_3<int, K> Vb;

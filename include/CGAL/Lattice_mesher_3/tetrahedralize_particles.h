@@ -280,14 +280,18 @@ void close_pits(Dt& dt, const IsInterior& is_interior, const MayReturn& may_retu
 {
   typedef typename Dt::Vertex_handle Vertex_handle;
   typedef typename Dt::Cell_handle Cell_handle;
-  std::vector<Vertex_handle> interior;
-  for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
-    if(is_interior(Vertex_handle(v))) interior.push_back(v);
-  std::sort(interior.begin(), interior.end(), [](Vertex_handle a, Vertex_handle b) { return a->info() < b->info(); });
+  std::vector<Vertex_handle> exposed;   // on the boundary; the cells that go in expose no other
+  for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
+    for(int i = 0; i < 4; ++i)
+      if(c->info() && !c->neighbor(i)->info())
+        for(int k = 1; k < 4; ++k)
+          if(is_interior(c->vertex((i + k) & 3))) exposed.push_back(c->vertex((i + k) & 3));
+  std::sort(exposed.begin(), exposed.end(), [](Vertex_handle a, Vertex_handle b) { return a->info() < b->info(); });
+  exposed.erase(std::unique(exposed.begin(), exposed.end()), exposed.end());
   std::vector<Cell_handle> star, open;
   for(bool changed = true; changed;) {
     changed = false;
-    for(Vertex_handle v : interior) {
+    for(Vertex_handle v : exposed) {
       star_of(v, star);
       open.clear();
       bool kept = false, closable = true;
