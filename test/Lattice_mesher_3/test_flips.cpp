@@ -311,21 +311,30 @@ TEST(Tetrahedralize_particles, FillsTheGapsOfTheSurfaceParticles)
   EXPECT_EQ(LM::internal::tetrahedralize_particles(ps, sphere, field, o, Traits()).tets, pitted.tets);
 }
 
+// The Delaunay triangulation that the tetrahedralization repairs: particle index per vertex,
+// kept (1) or not (0) per cell.
+typedef CGAL::Delaunay_triangulation_3<K, CGAL::Triangulation_data_structure_3<
+  CGAL::Triangulation_vertex_base_with_info_3<int, K>, CGAL::Triangulation_cell_base_with_info_3<char, K> > > Dt;
+
+// The points of an n x n x n grid of spacing 1, each moved by up to 0.05 along each axis,
+// numbered in the grid's order.
+Dt jittered_grid(int n, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> jitter(-.05, .05);
+  std::vector<std::pair<Point_3, int> > points;
+  for(int i = 0; i < n; ++i) for(int j = 0; j < n; ++j) for(int k = 0; k < n; ++k)
+    points.emplace_back(Point_3(i + jitter(random), j + jitter(random), k + jitter(random)), int(points.size()));
+  return Dt(points.begin(), points.end());
+}
+
 // Two boxes of a jittered grid's Delaunay cells that meet at one vertex: the boundary of the
 // cells kept is pinched there. The repair leaves it manifold and puts back every cell it took
 // whose return would not pinch it again, so that no cell is lost without need (a cell with an
 // interior particle taken for nothing left that particle on the boundary, a pit).
 TEST(Tetrahedralize_particles, RepairTakesOnlyTheCellsThatPinchTheBoundary)
 {
-  typedef CGAL::Triangulation_vertex_base_with_info_3<int, K> Vb;
-  typedef CGAL::Triangulation_cell_base_with_info_3<char, K> Cb;
-  typedef CGAL::Delaunay_triangulation_3<K, CGAL::Triangulation_data_structure_3<Vb, Cb> > Dt;
-  std::mt19937 random(5);
-  std::uniform_real_distribution<double> jitter(-.05, .05);
-  std::vector<std::pair<Point_3, int> > points;
-  for(int i = 0; i < 4; ++i) for(int j = 0; j < 4; ++j) for(int k = 0; k < 4; ++k)
-    points.emplace_back(Point_3(i + jitter(random), j + jitter(random), k + jitter(random)), int(points.size()));
-  Dt dt(points.begin(), points.end());
+  Dt dt = jittered_grid(4, 5);
   auto in_box = [](const Point_3& p, double lo) { return lo < p.x() && p.x() < lo + 1.5 && lo < p.y() && p.y() < lo + 1.5 && lo < p.z() && p.z() < lo + 1.5; };
   std::size_t kept = 0;
   for(auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
@@ -357,15 +366,7 @@ TEST(Tetrahedralize_particles, RepairTakesOnlyTheCellsThatPinchTheBoundary)
 // particle of theirs is interior too (their faces to it would go on the boundary untested).
 TEST(Tetrahedralize_particles, ClosesAPitAtAnInteriorParticle)
 {
-  typedef CGAL::Triangulation_vertex_base_with_info_3<int, K> Vb;
-  typedef CGAL::Triangulation_cell_base_with_info_3<char, K> Cb;
-  typedef CGAL::Delaunay_triangulation_3<K, CGAL::Triangulation_data_structure_3<Vb, Cb> > Dt;
-  std::mt19937 random(3);
-  std::uniform_real_distribution<double> jitter(-.05, .05);
-  std::vector<std::pair<Point_3, int> > points;
-  for(int i = 0; i < 5; ++i) for(int j = 0; j < 5; ++j) for(int k = 0; k < 5; ++k)
-    points.emplace_back(Point_3(i + jitter(random), j + jitter(random), k + jitter(random)), int(points.size()));
-  Dt dt(points.begin(), points.end());
+  Dt dt = jittered_grid(5, 3);
   const int centre = 62;   // (2, 2, 2)
   std::size_t open = 0;
   for(auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
@@ -399,9 +400,6 @@ TEST(Tetrahedralize_particles, ClosesAPitAtAnInteriorParticle)
 // its own test only: with a larger depth or no smallest angle it would go back.
 TEST(Tetrahedralize_particles, PutsBackNoSliverAndNoFaceOffTheSurface)
 {
-  typedef CGAL::Triangulation_vertex_base_with_info_3<int, K> Vb;
-  typedef CGAL::Triangulation_cell_base_with_info_3<char, K> Cb;
-  typedef CGAL::Delaunay_triangulation_3<K, CGAL::Triangulation_data_structure_3<Vb, Cb> > Dt;
   const LM::Constant_frame_field_3<Traits> field;
   const auto sphere = LM::make_sphere_domain_3<K>(CGAL::ORIGIN, 1.);
   const double l = .2;

@@ -333,9 +333,8 @@ bool may_put_back(Cell_handle c, const Particle_set_3<Point_3>& ps, const Domain
   if(!(smallest_dihedral_angle(q[0], q[1], q[2], q[3]) >= o.wedge_angle)) return false;
   for(int i = 0; i < 4; ++i) {
     if(c->neighbor(i)->info()) continue;
-    bool on_surface = true;
-    for(int k = 1; k < 4; ++k) on_surface = on_surface && ps.kinds[std::size_t(c->vertex((i + k) & 3)->info())] != Particle_kind::FREE;
-    if(!on_surface) continue;
+    auto on_surface = [&](int k) { return ps.kinds[std::size_t(c->vertex((i + k) & 3)->info())] != Particle_kind::FREE; };
+    if(!on_surface(1) || !on_surface(2) || !on_surface(3)) continue;
     const Point_3 &u = P((i + 1) & 3), &v = P((i + 2) & 3), &w = P((i + 3) & 3);
     for(const Point_3& m : { CGAL::centroid(u, v, w), CGAL::midpoint(u, v), CGAL::midpoint(v, w), CGAL::midpoint(w, u) })
       if(!(isotropic_surface_distance(domain, isotropic_map(field.frame(m), m), m) <= o.pit_depth * o.edge_length)) return false;
