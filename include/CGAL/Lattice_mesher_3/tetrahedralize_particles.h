@@ -211,6 +211,19 @@ bool manifold_around(const Dt& dt, typename Dt::Cell_handle c)
   return true;
 }
 
+// Puts the removed cells `group` back together (info 1) if, with all of them in, the boundary
+// is manifold around each and `may_return` accepts each; otherwise leaves them out. Returns
+// whether they went in.
+template <typename Dt, typename Cells, typename MayReturn>
+bool put_back(const Dt& dt, const Cells& group, const MayReturn& may_return)
+{
+  for(const auto& c : group) c->info() = 1;
+  bool back = true;   // the combinatorial test first: the caller's test projects
+  for(auto c = group.begin(); c != group.end() && back; ++c) back = manifold_around(dt, *c) && may_return(*c);
+  if(!back) for(const auto& c : group) c->info() = 0;
+  return back;
+}
+
 // Makes the boundary of the kept cells (info 1) of dt manifold by removing the kept cells around
 // each non-manifold edge or vertex that have a face on the boundary (peeling), repeated until
 // nothing changes: each pass removes cells, so it ends, but where the domain is thin one removal
@@ -258,13 +271,8 @@ void make_boundary_manifold(Dt& dt, std::set<typename Dt::Cell_handle>& wedges, 
   std::sort(removed.begin(), removed.end(), [&](Cell_handle a, Cell_handle b) { return particles(a) < particles(b); });
   for(bool changed = true; changed;) {   // a cell put back may let another one back
     changed = false;
-    for(Cell_handle c : removed) {
-      if(c->info()) continue;
-      c->info() = 1;   // the combinatorial test first: the caller's test projects
-      const bool back = manifold_around(dt, c) && may_return(c);
-      c->info() = back;
-      changed = changed || back;
-    }
+    for(Cell_handle c : removed)
+      if(!c->info() && put_back(dt, std::array<Cell_handle, 1>{ c }, may_return)) changed = true;
   }
 }
 
@@ -301,12 +309,7 @@ void close_pits(Dt& dt, const IsInterior& is_interior, const MayReturn& may_retu
         for(int i = 0; i < 4 && closable; ++i)
           closable = !dt.is_infinite(c->vertex(i)) && (c->vertex(i) == v || !is_interior(c->vertex(i)));
       }
-      if(!kept || open.empty() || !closable) continue;
-      for(Cell_handle c : open) c->info() = 1;
-      bool close = true;
-      for(std::size_t k = 0; k < open.size() && close; ++k) close = manifold_around(dt, open[k]) && may_return(open[k]);
-      if(!close) for(Cell_handle c : open) c->info() = 0;
-      changed = changed || close;
+      if(kept && !open.empty() && closable && put_back(dt, open, may_return)) changed = true;
     }
   }
 }
